@@ -1,0 +1,207 @@
+// lancer: renders a scene file to an image. See docs/SCENE-FORMAT.md for the contract.
+
+#include <unistd.h>
+
+#include <CLI/CLI.hpp>
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+
+#include "ProgressBar.h"
+#include "io/ImageWriter.h"
+#include "io/InputError.h"
+#include "render/Integrator.h"
+#include "render/Renderer.h"
+#include "scene/SceneLoader.h"
+
+namespace fs = std::filesystem;
+using namespace lancer;
+
+namespace {
+
+constexpr int kExitFailure = 1;
+constexpr int kExitBadInput = 2;
+constexpr int kExitInterrupted = 130;
+
+std::atomic<bool> interruptRequested{false};
+
+extern "C" void onInterrupt(int) {
+    interruptRequested = true;
+    // A second Ctrl-C kills at once, for a user who does not want to wait for the save.
+    std::signal(SIGINT, SIG_DFL);
+}
+
+struct Options {
+    std::string scene;
+    std::string output;
+    std::optional<int> width, height, spp, maxDepth;
+    std::optional<std::string> integrator;
+    int threads = 0;
+    std::uint64_t seed = 0;
+    std::optional<std::string> crop;
+    bool window = false;
+    bool quiet = false;
+};
+
+int fail(int status, const std::string& message) {
+    std::cerr << message << '\n';
+    return status;
+}
+
+int usageError(const std::string& message) {
+    return fail(kExitBadInput, "lancer: error: " + message);
+}
+
+// "X0,Y0,X1,Y1", inclusive-exclusive, inside the image.
+std::optional<PixelWindow> parseCrop(const std::string& text, int width, int height,
+                                     std::string& error) {
+    PixelWindow w;
+    char c1 = 0, c2 = 0, c3 = 0;
+    std::istringstream in(text);
+    if (!(in >> w.x0 >> c1 >> w.y0 >> c2 >> w.x1 >> c3 >> w.y1) || c1 != ',' || c2 != ',' ||
+        c3 != ',' || !(in >> std::ws).eof()) {
+        error = "--crop \"" + text + "\": expected X0,Y0,X1,Y1 (four whole numbers)";
+        return std::nullopt;
+    }
+    if (w.x0 < 0 || w.y0 < 0 || w.x1 > width || w.y1 > height || w.x0 >= w.x1 || w.y0 >= w.y1) {
+        error = "--crop " + text +
+                ": the window must satisfy 0 <= X0 < X1 <= " + std::to_string(width) +
+                " and 0 <= Y0 < Y1 <= " + std::to_string(height);
+        return std::nullopt;
+    }
+    return w;
+}
+
+std::string describeRate(std::uint64_t rays, double seconds) {
+    char text[128];
+    std::snprintf(text, sizeof text, "%.2f s, %.1f M rays, %.2f Mrays/s", seconds,
+                  static_cast<double>(rays) / 1e6,
+                  seconds > 0 ? static_cast<double>(rays) / 1e6 / seconds : 0.0);
+    return text;
+}
+
+int run(const Options& options) {
+    const fs::path output = options.output.empty()
+                                ? fs::path(options.scene).replace_extension(".png")
+                                : fs::path(options.output);
+    if (!ImageWriter::supports(output))
+        return usageError("unknown output format \"" + output.extension().string() + "\" for " +
+                          output.string() + " (expected one of " +
+                          ImageWriter::supportedExtensions() + ")");
+    const fs::path outputFolder =
+        output.parent_path().empty() ? fs::path(".") : output.parent_path();
+    if (!fs::is_directory(outputFolder))
+        return fail(kExitFailure, "lancer: error: " + output.string() +
+                                      ": cannot write the image (folder " + outputFolder.string() +
+                                      " does not exist)");
+
+    std::vector<std::string> warnings;
+    Scene scene = SceneLoader::loadFile(options.scene, warnings);
+    if (!options.quiet)
+        for (const std::string& warning : warnings)
+            std::cerr << warning << '\n';
+
+    RenderSettings& settings = scene.settings();
+    if (options.width) settings.width = *options.width;
+    if (options.height) settings.height = *options.height;
+    if (options.spp) settings.samplesPerPixel = *options.spp;
+    if (options.maxDepth) settings.maxDepth = *options.maxDepth;
+    if (options.integrator) settings.integrator = *options.integrator;
+
+    RenderOptions renderOptions;
+    renderOptions.threads = options.threads;
+    renderOptions.seed = options.seed;
+    if (options.crop) {
+        std::string error;
+        renderOptions.crop = parseCrop(*options.crop, settings.width, settings.height, error);
+        if (!renderOptions.crop) return usageError(error);
+    }
+    if (options.window && !options.quiet)
+        std::cerr << "lancer: warning: --window is not available in this build yet; rendering "
+                     "without it\n";
+
+    std::unique_ptr<Integrator> integrator;
+    try {
+        integrator = Integrator::create(scene);
+    } catch (const std::invalid_argument& e) {
+        return usageError(e.what());
+    }
+
+    ProgressBar progress(!options.quiet && isatty(STDERR_FILENO));
+    renderOptions.onTileDone = [&](int done, int total) { progress.update(done, total); };
+    renderOptions.cancel = &interruptRequested;
+    std::signal(SIGINT, onInterrupt);
+    const RenderResult result = Renderer(scene, *integrator).render(renderOptions);
+    std::signal(SIGINT, SIG_DFL);
+    progress.finish();
+
+    ImageWriter::write(result.film, output);
+
+    if (result.interrupted) {
+        std::cerr << "lancer: interrupted; the part rendered so far was written to "
+                  << output.string() << '\n';
+        return kExitInterrupted;
+    }
+    if (!options.quiet)
+        std::cerr << "lancer: " << output.string() << ": " << settings.width << "x"
+                  << settings.height << ", " << settings.samplesPerPixel << " spp, "
+                  << result.threads << " threads, " << describeRate(result.rays, result.seconds)
+                  << '\n';
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Options options;
+    CLI::App app{"lancer: a Whitted-style ray tracer. Renders SCENE.json to an image.", "lancer"};
+    app.set_version_flag("--version", std::string("lancer ") + LANCER_VERSION);
+    app.add_option("scene", options.scene, "Scene file (JSON, see docs/SCENE-FORMAT.md)")
+        ->required();
+    app.add_option(
+        "-o,--output", options.output,
+        "Output image; the extension picks the format: .png .jpg .bmp .tga .tif (8-bit sRGB), "
+        ".exr .hdr .pfm (linear float). Default: the scene's name with .png");
+    app.add_option("--width", options.width, "Image width in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 1 << 16));
+    app.add_option("--height", options.height, "Image height in pixels (overrides the scene)")
+        ->check(CLI::Range(1, 1 << 16));
+    app.add_option("--spp", options.spp, "Samples per pixel (overrides the scene)")
+        ->check(CLI::Range(1, 1 << 20));
+    app.add_option("--max-depth", options.maxDepth, "Recursion depth (overrides the scene)")
+        ->check(CLI::Range(0, 1 << 10));
+    app.add_option("--integrator", options.integrator,
+                   "whitted, path or radiosity (overrides the scene)")
+        ->check(CLI::IsMember({"whitted", "path", "radiosity"}));
+    app.add_option("--threads", options.threads, "Worker threads; 0 = all cores")
+        ->check(CLI::Range(0, 1024));
+    app.add_option("--seed", options.seed,
+                   "Random seed: the same seed and scene give the same image");
+    app.add_option("--crop", options.crop,
+                   "Render only the pixels X0,Y0,X1,Y1 (inclusive-exclusive)");
+    app.add_flag("--window", options.window, "Show the image in a window while it renders");
+    app.add_flag("--quiet", options.quiet, "No progress bar or summary, only errors");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        return usageError(std::string(e.what()) + " (see lancer --help)");
+    }
+
+    try {
+        return run(options);
+    } catch (const InputError& e) {
+        return fail(kExitBadInput, e.what());
+    } catch (const std::exception& e) {
+        return fail(kExitFailure, std::string("lancer: error: ") + e.what());
+    }
+}

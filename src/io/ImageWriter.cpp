@@ -1,0 +1,138 @@
+#include "io/ImageWriter.h"
+
+#include <FreeImage.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+#include <system_error>
+
+#include "math/Float.h"
+#include "math/Srgb.h"
+
+namespace lancer {
+
+namespace {
+
+struct Format {
+    const char* extension;
+    FREE_IMAGE_FORMAT fif;
+    bool linear;  // 32-bit float linear radiance rather than 8-bit sRGB
+    int saveFlags;
+};
+
+constexpr std::array<Format, 10> kFormats{{
+    {".png", FIF_PNG, false, PNG_DEFAULT},
+    {".jpg", FIF_JPEG, false, JPEG_QUALITYSUPERB},
+    {".jpeg", FIF_JPEG, false, JPEG_QUALITYSUPERB},
+    {".bmp", FIF_BMP, false, BMP_DEFAULT},
+    {".tga", FIF_TARGA, false, TARGA_DEFAULT},
+    {".tif", FIF_TIFF, false, TIFF_DEFAULT},
+    {".tiff", FIF_TIFF, false, TIFF_DEFAULT},
+    {".exr", FIF_EXR, true, EXR_FLOAT},  // FreeImage writes half floats unless asked
+    {".hdr", FIF_HDR, true, HDR_DEFAULT},
+    {".pfm", FIF_PFM, true, PFM_DEFAULT},
+}};
+
+const Format* findFormat(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const Format& f : kFormats)
+        if (ext == f.extension) return &f;
+    return nullptr;
+}
+
+// FreeImage reports failures through a global callback; keep the last message for ours.
+thread_local std::string lastFreeImageMessage;
+void recordFreeImageMessage(FREE_IMAGE_FORMAT, const char* message) {
+    lastFreeImageMessage = message ? message : "";
+}
+
+struct BitmapDeleter {
+    void operator()(FIBITMAP* b) const { FreeImage_Unload(b); }
+};
+using Bitmap = std::unique_ptr<FIBITMAP, BitmapDeleter>;
+
+// FreeImage stores rows bottom-up: film row y is scanline height - 1 - y.
+Bitmap toLinearBitmap(const Film& film) {
+    Bitmap bitmap(FreeImage_AllocateT(FIT_RGBF, film.width(), film.height()));
+    if (!bitmap) return bitmap;
+    for (int y = 0; y < film.height(); ++y) {
+        auto* row =
+            reinterpret_cast<FIRGBF*>(FreeImage_GetScanLine(bitmap.get(), film.height() - 1 - y));
+        for (int x = 0; x < film.width(); ++x) {
+            const Color& c = film.pixel(x, y);
+            row[x] = {c.r, c.g, c.b};
+        }
+    }
+    return bitmap;
+}
+
+BYTE encode8(float linear) {
+    const float v = linearToSrgb(clamp(linear, 0.0f, 1.0f));
+    return static_cast<BYTE>(std::lround(v * 255.0f));
+}
+
+Bitmap toSrgbBitmap(const Film& film) {
+    Bitmap bitmap(FreeImage_Allocate(film.width(), film.height(), 24));
+    if (!bitmap) return bitmap;
+    for (int y = 0; y < film.height(); ++y) {
+        BYTE* row = FreeImage_GetScanLine(bitmap.get(), film.height() - 1 - y);
+        for (int x = 0; x < film.width(); ++x, row += 3) {
+            // NaN radiance (which should never happen) is written as black rather than as garbage.
+            const Color& c = film.pixel(x, y);
+            row[FI_RGBA_RED] = encode8(std::isnan(c.r) ? 0 : c.r);
+            row[FI_RGBA_GREEN] = encode8(std::isnan(c.g) ? 0 : c.g);
+            row[FI_RGBA_BLUE] = encode8(std::isnan(c.b) ? 0 : c.b);
+        }
+    }
+    return bitmap;
+}
+
+}  // namespace
+
+bool ImageWriter::supports(const std::filesystem::path& path) {
+    return findFormat(path) != nullptr;
+}
+
+std::string ImageWriter::supportedExtensions() {
+    std::string list;
+    for (const Format& f : kFormats)
+        list += (list.empty() ? "" : ", ") + std::string(f.extension);
+    return list;
+}
+
+void ImageWriter::write(const Film& film, const std::filesystem::path& path) {
+    const Format* format = findFormat(path);
+    if (!format) throw std::runtime_error(path.string() + ": unsupported image format");
+
+    FreeImage_SetOutputMessage(recordFreeImageMessage);
+    const Bitmap bitmap = format->linear ? toLinearBitmap(film) : toSrgbBitmap(film);
+    if (!bitmap) throw std::runtime_error(path.string() + ": out of memory for the image");
+
+    // A unique name beside the target, so that the final rename stays within one file system.
+    const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
+    std::filesystem::path temporary = path;
+    temporary += ".tmp" + std::to_string(stamp);
+    lastFreeImageMessage.clear();
+    if (!FreeImage_Save(format->fif, bitmap.get(), temporary.string().c_str(), format->saveFlags)) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw std::runtime_error(
+            path.string() + ": cannot write the image" +
+            (lastFreeImageMessage.empty() ? "" : " (" + lastFreeImageMessage + ")"));
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        std::filesystem::remove(temporary, error);
+        throw std::runtime_error(path.string() + ": cannot write the image (" + error.message() +
+                                 ")");
+    }
+}
+
+}  // namespace lancer

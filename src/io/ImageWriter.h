@@ -1,0 +1,25 @@
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "render/Film.h"
+
+namespace lancer {
+
+// Saves a film through FreeImage, in the format the file extension names: .png .jpg .bmp .tga
+// .tif as 8-bit sRGB (clamped), .exr .hdr .pfm as linear 32-bit float. The image goes to a
+// temporary file in the same folder, renamed into place once complete, so that a failure never
+// leaves a damaged file behind.
+class ImageWriter {
+public:
+    // Whether the path's extension (case-insensitive) is one of the formats above.
+    static bool supports(const std::filesystem::path& path);
+    // The supported extensions, for messages: ".png, .jpg, ...".
+    static std::string supportedExtensions();
+
+    // Throws std::runtime_error naming the file when it cannot be written.
+    static void write(const Film& film, const std::filesystem::path& path);
+};
+
+}  // namespace lancer

@@ -1,0 +1,33 @@
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace lancer {
+
+// Where in a text file something stands; line and column count from 1 (0: unknown).
+struct SourceLocation {
+    int line = 0;
+    int column = 0;
+};
+
+// Bad input from the user (scene, model, texture): reported as one line,
+// "file:line:col: error: message", and exit status 2.
+class InputError : public std::runtime_error {
+public:
+    InputError(const std::string& file, const SourceLocation& where, const std::string& message)
+        : std::runtime_error(format(file, where, message)) {}
+    InputError(const std::string& file, const std::string& message)
+        : InputError(file, SourceLocation{}, message) {}
+
+private:
+    static std::string format(const std::string& file, const SourceLocation& where,
+                              const std::string& message) {
+        std::string prefix = file;
+        if (where.line > 0)
+            prefix += ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
+        return prefix + ": error: " + message;
+    }
+};
+
+}  // namespace lancer

@@ -1,0 +1,216 @@
+#include "io/JsonDocument.h"
+
+#include <algorithm>
+#include <cstring>
+#include <iterator>
+#include <vector>
+
+namespace lancer {
+
+namespace {
+
+// A character iterator that remembers the offset of the last character read through it. The
+// JSON lexer reads through it, so when the parser reports a value, the reader is just past that
+// value's last character (or on the character after a number, which the lexer reads ahead).
+class TrackingIterator {
+public:
+    using iterator_category = std::input_iterator_tag;
+    using value_type = char;
+    using difference_type = std::ptrdiff_t;
+    using pointer = const char*;
+    using reference = const char&;
+
+    TrackingIterator(const char* begin, const char* p, std::size_t* lastRead)
+        : begin_(begin), p_(p), lastRead_(lastRead) {}
+
+    const char& operator*() const {
+        *lastRead_ = static_cast<std::size_t>(p_ - begin_);
+        return *p_;
+    }
+    TrackingIterator& operator++() {
+        ++p_;
+        return *this;
+    }
+    TrackingIterator operator++(int) {
+        TrackingIterator old = *this;
+        ++p_;
+        return old;
+    }
+    bool operator==(const TrackingIterator& o) const { return p_ == o.p_; }
+    bool operator!=(const TrackingIterator& o) const { return p_ != o.p_; }
+
+private:
+    const char* begin_;
+    const char* p_;
+    std::size_t* lastRead_;
+};
+
+std::string escapePointerToken(const std::string& key) {
+    std::string out;
+    for (char c : key) {
+        if (c == '~')
+            out += "~0";
+        else if (c == '/')
+            out += "~1";
+        else
+            out += c;
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string JsonDocument::child(const std::string& parent, const std::string& key) {
+    return parent + "/" + escapePointerToken(key);
+}
+
+std::string JsonDocument::child(const std::string& parent, std::size_t index) {
+    return parent + "/" + std::to_string(index);
+}
+
+// SAX handler for nlohmann::json that builds no tree, only the map from JSON pointer to position.
+class JsonPositionRecorder {
+public:
+    using json = nlohmann::json;
+    using number_integer_t = json::number_integer_t;
+    using number_unsigned_t = json::number_unsigned_t;
+    using number_float_t = json::number_float_t;
+    using string_t = json::string_t;
+    using binary_t = json::binary_t;
+
+    JsonPositionRecorder(const std::string& text, const std::size_t& lastRead, JsonDocument& doc)
+        : text_(text), lastRead_(lastRead), doc_(doc) {
+        lineStarts_.push_back(0);
+        for (std::size_t i = 0; i < text.size(); ++i)
+            if (text[i] == '\n') lineStarts_.push_back(i + 1);
+    }
+
+    // Line and column (from 1) of the byte at `offset`.
+    SourceLocation locate(std::size_t offset) const {
+        const auto line = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), offset) - 1;
+        return {static_cast<int>(line - lineStarts_.begin()) + 1,
+                static_cast<int>(offset - *line) + 1};
+    }
+
+    bool null() { return scalar(lastRead_ + 1 - 4); }
+    bool boolean(bool v) { return scalar(lastRead_ + 1 - (v ? 4 : 5)); }
+    bool number_integer(number_integer_t) { return number(); }
+    bool number_unsigned(number_unsigned_t) { return number(); }
+    bool number_float(number_float_t, const string_t&) { return number(); }
+    bool string(string_t&) { return scalar(openingQuote()); }
+    bool binary(binary_t&) { return true; }
+    bool start_object(std::size_t) { return open(false); }
+    bool start_array(std::size_t) { return open(true); }
+    bool end_object() { return close(); }
+    bool end_array() { return close(); }
+    bool key(string_t& k) {
+        Container& c = stack_.back();
+        c.pendingKey = k;
+        doc_.positions_[JsonDocument::child(c.pointer, k)].key = locate(openingQuote());
+        return true;
+    }
+    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) {
+        // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L,
+        // column C: what"; keep only "what", the position is given in our own format.
+        std::string message = e.what();
+        const std::size_t colon = message.find(": ", message.find("column"));
+        if (colon != std::string::npos) message = message.substr(colon + 2);
+        errorMessage = message;
+        errorOffset = std::min(lastRead_, text_.empty() ? 0 : text_.size() - 1);
+        return false;
+    }
+
+    std::string errorMessage;
+    std::size_t errorOffset = 0;
+
+private:
+    struct Container {
+        std::string pointer;
+        bool isArray;
+        std::size_t nextIndex = 0;
+        std::string pendingKey;
+    };
+
+    // The value just read is a string ending at lastRead_: find its unescaped opening quote.
+    std::size_t openingQuote() const {
+        std::size_t i = lastRead_;
+        while (i > 0) {
+            --i;
+            if (text_[i] != '"') continue;
+            std::size_t backslashes = 0;
+            while (i > backslashes && text_[i - 1 - backslashes] == '\\')
+                ++backslashes;
+            if (backslashes % 2 == 0) return i;
+        }
+        return 0;
+    }
+
+    // The lexer has read one character past the number: walk back over the number's characters.
+    bool number() {
+        std::size_t i = lastRead_;
+        while (i > 0 && std::strchr("0123456789+-.eE", text_[i - 1]) != nullptr)
+            --i;
+        return scalar(i);
+    }
+
+    std::string nextPointer() {
+        if (stack_.empty()) return "";
+        Container& c = stack_.back();
+        return c.isArray ? JsonDocument::child(c.pointer, c.nextIndex++)
+                         : JsonDocument::child(c.pointer, c.pendingKey);
+    }
+
+    bool scalar(std::size_t startOffset) {
+        doc_.positions_[nextPointer()].value = locate(startOffset);
+        return true;
+    }
+
+    bool open(bool isArray) {
+        const std::string pointer = nextPointer();
+        doc_.positions_[pointer].value = locate(lastRead_);
+        stack_.push_back({pointer, isArray, 0, {}});
+        return true;
+    }
+
+    bool close() {
+        stack_.pop_back();
+        return true;
+    }
+
+    const std::string& text_;
+    const std::size_t& lastRead_;
+    JsonDocument& doc_;
+    std::vector<Container> stack_;
+    std::vector<std::size_t> lineStarts_;
+};
+
+JsonDocument JsonDocument::parse(const std::string& text, const std::string& fileName) {
+    JsonDocument doc;
+    doc.fileName_ = fileName;
+    std::size_t lastRead = 0;
+    JsonPositionRecorder recorder(text, lastRead, doc);
+    const char* begin = text.data();
+    const bool ok =
+        nlohmann::json::sax_parse(TrackingIterator(begin, begin, &lastRead),
+                                  TrackingIterator(begin, begin + text.size(), &lastRead),
+                                  &recorder, nlohmann::json::input_format_t::json,
+                                  /*strict=*/true, /*ignore_comments=*/true);
+    if (!ok)
+        throw InputError(fileName, recorder.locate(recorder.errorOffset), recorder.errorMessage);
+    doc.root_ =
+        nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+    return doc;
+}
+
+SourceLocation JsonDocument::valueLocation(const std::string& pointer) const {
+    const auto it = positions_.find(pointer);
+    return it == positions_.end() ? SourceLocation{} : it->second.value;
+}
+
+SourceLocation JsonDocument::keyLocation(const std::string& pointer) const {
+    const auto it = positions_.find(pointer);
+    if (it == positions_.end()) return {};
+    return it->second.key.line > 0 ? it->second.key : it->second.value;
+}
+
+}  // namespace lancer

@@ -1,0 +1,21 @@
+#pragma once
+
+#include "lights/Light.h"
+
+namespace lancer {
+
+// Light arriving from infinitely far away along `direction`, with irradiance `irradiance` on a
+// surface facing it.
+class DirectionalLight final : public Light {
+public:
+    DirectionalLight(const Vec3& direction, const Color& irradiance);
+
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    bool isDelta() const override { return true; }
+
+private:
+    Vec3 towardsLight_;
+    Color irradiance_;
+};
+
+}  // namespace lancer

@@ -1,0 +1,22 @@
+#pragma once
+
+#include "lights/Light.h"
+
+namespace lancer {
+
+// A point light of radiant intensity `intensity`: E = I / d^2, or E = I at any distance when
+// inverse-square falloff is turned off (POV-Ray's default behaviour).
+class PointLight final : public Light {
+public:
+    PointLight(const Vec3& position, const Color& intensity, bool inverseSquareFalloff = true);
+
+    LightSample sample(const Vec3& p, const Vec2& u) const override;
+    bool isDelta() const override { return true; }
+
+private:
+    Vec3 position_;
+    Color intensity_;
+    bool inverseSquareFalloff_;
+};
+
+}  // namespace lancer

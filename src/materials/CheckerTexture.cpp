@@ -1,0 +1,19 @@
+#include "materials/CheckerTexture.h"
+
+#include <cmath>
+
+namespace lancer {
+
+CheckerTexture::CheckerTexture(const Color& even, const Color& odd, float scale)
+    : even_(even), odd_(odd), scale_(scale) {}
+
+Color CheckerTexture::evaluate(const Hit& hit) const {
+    // In double: uv can be large world coordinates, and floor() of a float sum would misplace
+    // square boundaries far from the origin.
+    const auto cell = [this](float x) {
+        return static_cast<long long>(std::floor(double(x) / scale_));
+    };
+    return (cell(hit.uv.x) + cell(hit.uv.y)) % 2 == 0 ? even_ : odd_;
+}
+
+}  // namespace lancer

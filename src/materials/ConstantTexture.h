@@ -1,0 +1,16 @@
+#pragma once
+
+#include "materials/Texture.h"
+
+namespace lancer {
+
+class ConstantTexture final : public Texture {
+public:
+    explicit ConstantTexture(const Color& color) : color_(color) {}
+    Color evaluate(const Hit&) const override { return color_; }
+
+private:
+    Color color_;
+};
+
+}  // namespace lancer

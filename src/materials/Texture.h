@@ -1,0 +1,15 @@
+#pragma once
+
+#include "geometry/Hit.h"
+#include "math/Color.h"
+
+namespace lancer {
+
+// A colour that varies over a surface, looked up at a hit's uv.
+class Texture {
+public:
+    virtual ~Texture() = default;
+    virtual Color evaluate(const Hit& hit) const = 0;
+};
+
+}  // namespace lancer

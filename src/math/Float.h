@@ -1,0 +1,41 @@
+#pragma once
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace lancer {
+
+constexpr float kPi = std::numbers::pi_v<float>;
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+
+// The largest float below 1: the top of sample ranges [0, 1).
+constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
+
+// Half a unit in the last place: the bound on the relative rounding error of one float operation.
+constexpr float kMachineEpsilon = std::numeric_limits<float>::epsilon() * 0.5f;
+
+// Bound on the relative error accumulated by n successive float operations (Higham's gamma_n,
+// as used by pbrt to bound the error of computed intersection points).
+constexpr float gamma(int n) {
+    return (static_cast<float>(n) * kMachineEpsilon) /
+           (1.0f - static_cast<float>(n) * kMachineEpsilon);
+}
+
+inline float nextFloatUp(float v) {
+    return std::nextafter(v, kInfinity);
+}
+inline float nextFloatDown(float v) {
+    return std::nextafter(v, -kInfinity);
+}
+
+constexpr float radians(float degrees) {
+    return degrees * (kPi / 180.0f);
+}
+
+template <typename T>
+constexpr T clamp(T v, T lo, T hi) {
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+
+}  // namespace lancer

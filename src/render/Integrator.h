@@ -1,0 +1,27 @@
+#pragma once
+
+#include <cstdint>
+#include <memory>
+
+#include "geometry/Ray.h"
+#include "math/Color.h"
+
+namespace lancer {
+
+class Sampler;
+class Scene;
+
+// Computes the radiance arriving along a camera ray. An integrator is shared by all render
+// threads: radiance() must not modify it.
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+
+    // rayCount is incremented for every ray the integrator traces (the camera ray included).
+    virtual Color radiance(const Ray& ray, Sampler& sampler, std::uint64_t& rayCount) const = 0;
+
+    // The integrator the scene's settings name ("whitted", ...), rendering that scene.
+    static std::unique_ptr<Integrator> create(const Scene& scene);
+};
+
+}  // namespace lancer

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <cmath>
+#include <cstdint>
+
+#include "math/Float.h"
+#include "math/Vec2.h"
+
+namespace lancer {
+
+// Maps the unit square onto the unit disc, keeping strata compact (Shirley and Chiu 1997).
+inline Vec2 sampleUniformDiskConcentric(const Vec2& u) {
+    const Vec2 offset = 2.0f * u - Vec2(1, 1);
+    if (offset.x == 0 && offset.y == 0) return {0, 0};
+    float r, theta;
+    if (std::abs(offset.x) > std::abs(offset.y)) {
+        r = offset.x;
+        theta = (kPi / 4) * (offset.y / offset.x);
+    } else {
+        r = offset.y;
+        theta = kPi / 2 - (kPi / 4) * (offset.x / offset.y);
+    }
+    return r * Vec2(std::cos(theta), std::sin(theta));
+}
+
+// A 64-bit hash of several integers (the SplitMix64 finaliser, chained): turns (seed, pixel,
+// dimension) into independent-looking seeds.
+inline std::uint64_t mixBits(std::uint64_t v) {
+    v ^= v >> 31;
+    v *= 0x7fb5d329728ea185ULL;
+    v ^= v >> 27;
+    v *= 0x81dadef4bc2dd44dULL;
+    v ^= v >> 33;
+    return v;
+}
+
+template <typename... Ts>
+std::uint64_t hashValues(std::uint64_t first, Ts... rest) {
+    std::uint64_t h = mixBits(first + 0x9e3779b97f4a7c15ULL);
+    ((h = mixBits(h ^ (static_cast<std::uint64_t>(rest) + 0x9e3779b97f4a7c15ULL))), ...);
+    return h;
+}
+
+}  // namespace lancer

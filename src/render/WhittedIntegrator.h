@@ -1,0 +1,28 @@
+#pragma once
+
+#include "render/Integrator.h"
+
+namespace lancer {
+
+class Scene;
+struct Hit;
+
+// Whitted ray tracing with the scene format's shading equation: emission, ambient, Blinn-Phong
+// direct lighting with shadow rays, and recursive mirror reflection and refraction (weights split
+// by the Fresnel term for transmissive materials) up to maxDepth bounces.
+class WhittedIntegrator final : public Integrator {
+public:
+    WhittedIntegrator(const Scene& scene, int maxDepth);
+
+    Color radiance(const Ray& ray, Sampler& sampler, std::uint64_t& rayCount) const override;
+
+private:
+    Color trace(const Ray& ray, int depth, Sampler& sampler, std::uint64_t& rayCount) const;
+    Color directLighting(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,
+                         std::uint64_t& rayCount) const;
+
+    const Scene& scene_;
+    int maxDepth_;
+};
+
+}  // namespace lancer

@@ -1,0 +1,375 @@
+#include "scene/SceneLoader.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "geometry/Plane.h"
+#include "geometry/Sphere.h"
+#include "geometry/Triangle.h"
+#include "lights/DirectionalLight.h"
+#include "lights/PointLight.h"
+#include "materials/CheckerTexture.h"
+#include "materials/ConstantTexture.h"
+#include "scene/DidYouMean.h"
+
+namespace lancer {
+
+namespace {
+
+std::string inQuotes(const std::string& s) {
+    return "\"" + s + "\"";
+}
+
+// What a JSON value is, in words, for "expected ..., got ..." messages.
+std::string describe(const nlohmann::json& v) {
+    if (v.is_null()) return "null";
+    if (v.is_boolean()) return v.get<bool>() ? "true" : "false";
+    if (v.is_number()) return "a number";
+    if (v.is_string()) return "the string " + inQuotes(v.get<std::string>());
+    if (v.is_array()) return "an array of " + std::to_string(v.size());
+    return "an object";
+}
+
+const std::vector<std::string> kIntegrators{"whitted", "path", "radiosity"};
+
+}  // namespace
+
+SceneLoader::Node SceneLoader::Node::operator[](const std::string& key) const {
+    return {value.at(key), JsonDocument::child(pointer, key), inQuotes(key)};
+}
+
+SceneLoader::Node SceneLoader::Node::at(std::size_t index) const {
+    return {value.at(index), JsonDocument::child(pointer, index),
+            "element " + std::to_string(index) + " of " + name};
+}
+
+Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    std::error_code error;
+    if (std::filesystem::is_directory(path, error))
+        throw InputError(path.string(), "is a folder, not a scene file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw InputError(path.string(), "cannot open the scene file (does it exist?)");
+    std::ostringstream text;
+    text << in.rdbuf();
+    return loadString(text.str(), path.string(), warnings);
+}
+
+Scene SceneLoader::loadString(const std::string& text, const std::string& fileName,
+                              std::vector<std::string>& warnings) {
+    const JsonDocument doc = JsonDocument::parse(text, fileName);
+    return SceneLoader(doc, warnings).load();
+}
+
+SceneLoader::SceneLoader(const JsonDocument& doc, std::vector<std::string>& warnings)
+    : doc_(doc), warnings_(warnings) {}
+
+Scene SceneLoader::load() {
+    const Node root{doc_.root(), "", "the scene"};
+    requireObject(root, "the scene");
+    checkKeys(root, "the scene",
+              {"render", "camera", "background", "ambient", "materials", "objects", "lights"});
+
+    defaultMaterial_ = scene_.addMaterial(std::make_unique<Material>());
+    if (root.has("render")) loadRender(root["render"]);
+    if (!root.has("camera")) fail(root, "the scene has no \"camera\"");
+    loadCamera(root["camera"]);
+    if (root.has("background")) scene_.setBackground(readColor(root["background"]));
+    if (root.has("ambient")) scene_.setAmbient(readColor(root["ambient"]));
+    if (root.has("materials")) loadMaterials(root["materials"]);
+    if (root.has("objects")) {
+        const Node objects = root["objects"];
+        requireArray(objects, "\"objects\"");
+        for (std::size_t i = 0; i < objects.value.size(); ++i)
+            loadObject(objects.at(i));
+    }
+    if (root.has("lights")) {
+        const Node lights = root["lights"];
+        requireArray(lights, "\"lights\"");
+        for (std::size_t i = 0; i < lights.value.size(); ++i)
+            loadLight(lights.at(i));
+    }
+    return std::move(scene_);
+}
+
+void SceneLoader::loadRender(const Node& node) {
+    requireObject(node, "\"render\"");
+    checkKeys(node, "\"render\"", {"width", "height", "spp", "max_depth", "integrator"});
+    RenderSettings& settings = scene_.settings();
+    if (node.has("width")) settings.width = readInt(node["width"], 1);
+    if (node.has("height")) settings.height = readInt(node["height"], 1);
+    if (node.has("spp")) settings.samplesPerPixel = readInt(node["spp"], 1);
+    if (node.has("max_depth")) settings.maxDepth = readInt(node["max_depth"], 0);
+    if (node.has("integrator")) {
+        const Node integrator = node["integrator"];
+        settings.integrator = readString(integrator);
+        if (std::find(kIntegrators.begin(), kIntegrators.end(), settings.integrator) ==
+            kIntegrators.end())
+            fail(integrator, "unknown integrator " + inQuotes(settings.integrator) +
+                                 didYouMean(settings.integrator, kIntegrators) +
+                                 "; expected \"whitted\", \"path\" or \"radiosity\"");
+    }
+}
+
+void SceneLoader::loadCamera(const Node& node) {
+    requireObject(node, "\"camera\"");
+    checkKeys(node, "\"camera\"",
+              {"position", "look_at", "up", "vfov", "aperture", "focus_distance"});
+    const Vec3 position = readVec3(require(node, "position", "the camera"));
+    const Vec3 lookAt = readVec3(require(node, "look_at", "the camera"));
+    if (position == lookAt) fail(node["look_at"], "the camera looks at its own position");
+    const Vec3 up = node.has("up") ? readDirection(node["up"]) : Vec3(0, 1, 0);
+    if (lengthSquared(cross(normalize(up), normalize(position - lookAt))) < 1e-12f)
+        fail(node.has("up") ? node["up"] : node,
+             "the camera's \"up\" is parallel to its viewing direction");
+    float vfov = 40;
+    if (node.has("vfov")) {
+        vfov = readNumberAtLeast(node["vfov"], 0, false);
+        if (vfov >= 180) fail(node["vfov"], "\"vfov\" must be below 180 degrees");
+    }
+    const float aperture = node.has("aperture") ? readNumberAtLeast(node["aperture"], 0, true) : 0;
+    const float focusDistance = node.has("focus_distance")
+                                    ? readNumberAtLeast(node["focus_distance"], 0, false)
+                                    : length(position - lookAt);
+    scene_.setCamera(Camera(position, lookAt, up, vfov, aperture, focusDistance));
+}
+
+void SceneLoader::loadMaterials(const Node& node) {
+    requireObject(node, "\"materials\"");
+    for (const auto& [name, value] : node.value.items())
+        materials_[name] = scene_.addMaterial(loadMaterial(node[name]));
+}
+
+std::unique_ptr<Material> SceneLoader::loadMaterial(const Node& node) {
+    requireObject(node, "a material");
+    checkKeys(node, "a material",
+              {"diffuse", "ambient", "specular", "shininess", "reflection", "transmission", "ior",
+               "emission"});
+    auto m = std::make_unique<Material>();
+    if (node.has("diffuse")) m->diffuse = loadTexture(node["diffuse"]);
+    m->ambient = node.has("ambient") ? loadTexture(node["ambient"]) : m->diffuse;
+    if (node.has("specular")) m->specular = readColor(node["specular"]);
+    if (node.has("shininess")) m->shininess = readNumberAtLeast(node["shininess"], 0, true);
+    if (node.has("reflection")) m->reflection = readColor(node["reflection"]);
+    if (node.has("transmission")) m->transmission = readColor(node["transmission"]);
+    if (node.has("ior")) m->ior = readNumberAtLeast(node["ior"], 0, false);
+    if (node.has("emission")) m->emission = readColor(node["emission"]);
+    return m;
+}
+
+std::shared_ptr<const Texture> SceneLoader::loadTexture(const Node& node) {
+    if (!node.value.is_object()) return std::make_shared<ConstantTexture>(readColor(node));
+    checkKeys(node, "a texture", {"checker", "texture"});
+    if (node.value.size() != 1)
+        fail(node, "a texture is either {\"checker\": ...} or {\"texture\": FILE}");
+    if (node.has("texture"))
+        fail(node["texture"], "image textures are not supported yet (use a colour or a checker)");
+    const Node checker = node["checker"];
+    requireObject(checker, "\"checker\"");
+    checkKeys(checker, "\"checker\"", {"even", "odd", "scale"});
+    const Color even = checker.has("even") ? readColor(checker["even"]) : Color(1);
+    const Color odd = checker.has("odd") ? readColor(checker["odd"]) : Color(0);
+    const float scale = checker.has("scale") ? readNumberAtLeast(checker["scale"], 0, false) : 1;
+    return std::make_shared<CheckerTexture>(even, odd, scale);
+}
+
+const Material* SceneLoader::materialOf(const Node& object) {
+    if (!object.has("material")) return defaultMaterial_;
+    const Node node = object["material"];
+    const std::string name = readString(node);
+    const auto it = materials_.find(name);
+    if (it != materials_.end()) return it->second;
+    std::vector<std::string> names;
+    for (const auto& entry : materials_)
+        names.push_back(entry.first);
+    fail(node, "material " + inQuotes(name) + " is not defined" + didYouMean(name, names));
+}
+
+void SceneLoader::loadObject(const Node& node) {
+    requireObject(node, "an object");
+    const std::string type = readString(require(node, "type", "an object"));
+    if (type == "sphere") {
+        checkKeys(node, "a sphere", {"type", "center", "radius", "material"});
+        const Vec3 center = readVec3(require(node, "center", "a sphere"));
+        const float radius = readNumberAtLeast(require(node, "radius", "a sphere"), 0, false);
+        scene_.addShape(std::make_unique<Sphere>(center, radius, materialOf(node)));
+    } else if (type == "plane") {
+        checkKeys(node, "a plane", {"type", "point", "normal", "material"});
+        const Vec3 point = readVec3(require(node, "point", "a plane"));
+        const Vec3 normal = readDirection(require(node, "normal", "a plane"));
+        scene_.addShape(std::make_unique<Plane>(point, normal, materialOf(node)));
+    } else if (type == "triangle") {
+        checkKeys(node, "a triangle", {"type", "vertices", "normals", "uvs", "material"});
+        const auto readThree = [&](const std::string& key, auto read) {
+            const Node list = require(node, key, "a triangle");
+            if (!list.value.is_array() || list.value.size() != 3)
+                fail(list, inQuotes(key) + " must be an array of 3, got " + describe(list.value));
+            using T = decltype(read(list));
+            std::array<T, 3> out;
+            for (std::size_t i = 0; i < 3; ++i)
+                out[i] = read(list.at(i));
+            return out;
+        };
+        const auto vertices = readThree("vertices", [&](const Node& n) { return readVec3(n); });
+        std::optional<std::array<Vec3, 3>> normals;
+        std::optional<std::array<Vec2, 3>> uvs;
+        if (node.has("normals"))
+            normals = readThree("normals", [&](const Node& n) { return readDirection(n); });
+        if (node.has("uvs")) uvs = readThree("uvs", [&](const Node& n) { return readVec2(n); });
+        auto triangle = std::make_unique<Triangle>(vertices, materialOf(node), normals, uvs);
+        if (triangle->area() > 0)
+            scene_.addShape(std::move(triangle));
+        else
+            warn(node["vertices"], "triangle has zero area and is left out");
+    } else if (type == "mesh") {
+        fail(node["type"], "\"mesh\" objects are not supported yet");
+    } else {
+        fail(node["type"], "unknown object type " + inQuotes(type) +
+                               didYouMean(type, {"sphere", "plane", "triangle", "mesh"}));
+    }
+}
+
+void SceneLoader::loadLight(const Node& node) {
+    requireObject(node, "a light");
+    const std::string type = readString(require(node, "type", "a light"));
+    if (type == "point") {
+        checkKeys(node, "a point light", {"type", "position", "intensity", "falloff"});
+        const Vec3 position = readVec3(require(node, "position", "a point light"));
+        const Color intensity = readColor(require(node, "intensity", "a point light"));
+        bool inverseSquare = true;
+        if (node.has("falloff")) {
+            const std::string falloff = readString(node["falloff"]);
+            if (falloff == "none")
+                inverseSquare = false;
+            else if (falloff != "inverse_square")
+                fail(node["falloff"], "unknown falloff " + inQuotes(falloff) +
+                                          didYouMean(falloff, {"none", "inverse_square"}) +
+                                          "; expected \"inverse_square\" or \"none\"");
+        }
+        scene_.addLight(std::make_unique<PointLight>(position, intensity, inverseSquare));
+    } else if (type == "directional") {
+        checkKeys(node, "a directional light", {"type", "direction", "irradiance"});
+        const Vec3 direction = readDirection(require(node, "direction", "a directional light"));
+        const Color irradiance = readColor(require(node, "irradiance", "a directional light"));
+        scene_.addLight(std::make_unique<DirectionalLight>(direction, irradiance));
+    } else if (type == "quad") {
+        fail(node["type"], "\"quad\" lights are not supported yet");
+    } else {
+        fail(node["type"], "unknown light type " + inQuotes(type) +
+                               didYouMean(type, {"point", "directional", "quad"}));
+    }
+}
+
+// --- reading values, with messages that say where and what ---
+
+void SceneLoader::fail(const Node& node, const std::string& message) const {
+    throw InputError(doc_.fileName(), doc_.valueLocation(node.pointer), message);
+}
+
+void SceneLoader::failAtKey(const Node& node, const std::string& message) const {
+    throw InputError(doc_.fileName(), doc_.keyLocation(node.pointer), message);
+}
+
+void SceneLoader::warn(const Node& node, const std::string& message) const {
+    const SourceLocation where = doc_.valueLocation(node.pointer);
+    warnings_.push_back(doc_.fileName() + ":" + std::to_string(where.line) + ":" +
+                        std::to_string(where.column) + ": warning: " + message);
+}
+
+void SceneLoader::checkKeys(const Node& object, const std::string& what,
+                            const std::vector<std::string>& allowed) const {
+    for (const auto& [key, value] : object.value.items()) {
+        if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+        failAtKey(object[key],
+                  "unknown key " + inQuotes(key) + " in " + what + didYouMean(key, allowed));
+    }
+}
+
+void SceneLoader::requireObject(const Node& node, const std::string& what) const {
+    if (!node.value.is_object())
+        fail(node, what + " must be an object {...}, got " + describe(node.value));
+}
+
+void SceneLoader::requireArray(const Node& node, const std::string& what) const {
+    if (!node.value.is_array())
+        fail(node, what + " must be an array [...], got " + describe(node.value));
+}
+
+SceneLoader::Node SceneLoader::require(const Node& object, const std::string& key,
+                                       const std::string& what) const {
+    if (!object.has(key)) fail(object, what + " needs " + inQuotes(key));
+    return object[key];
+}
+
+float SceneLoader::readNumber(const Node& node) const {
+    if (!node.value.is_number())
+        fail(node, node.name + " must be a number, got " + describe(node.value));
+    const double v = node.value.get<double>();
+    if (!std::isfinite(static_cast<float>(v))) fail(node, node.name + " is out of range");
+    return static_cast<float>(v);
+}
+
+float SceneLoader::readNumberAtLeast(const Node& node, float minimum, bool inclusive) const {
+    const float v = readNumber(node);
+    if (inclusive ? v < minimum : v <= minimum)
+        fail(node, node.name + " must be " + (inclusive ? "at least " : "greater than ") +
+                       (minimum == 0 ? "0" : std::to_string(minimum)));
+    return v;
+}
+
+int SceneLoader::readInt(const Node& node, int minimum) const {
+    if (!node.value.is_number_integer())
+        fail(node, node.name + " must be a whole number, got " + describe(node.value));
+    const auto v = node.value.get<long long>();
+    if (v < minimum) fail(node, node.name + " must be at least " + std::to_string(minimum));
+    if (v > 1'000'000'000) fail(node, node.name + " is too large");
+    return static_cast<int>(v);
+}
+
+std::string SceneLoader::readString(const Node& node) const {
+    if (!node.value.is_string())
+        fail(node, node.name + " must be a string, got " + describe(node.value));
+    return node.value.get<std::string>();
+}
+
+Vec3 SceneLoader::readVec3(const Node& node) const {
+    if (!node.value.is_array() || node.value.size() != 3)
+        fail(node,
+             node.name + " must be an array of 3 numbers [x, y, z], got " + describe(node.value));
+    Vec3 v;
+    for (std::size_t i = 0; i < 3; ++i)
+        v[static_cast<int>(i)] = readNumber(node.at(i));
+    return v;
+}
+
+Vec3 SceneLoader::readDirection(const Node& node) const {
+    const Vec3 v = readVec3(node);
+    if (!(lengthSquared(v) > 0) || !isFinite(normalize(v)))
+        fail(node, node.name + " must be a non-zero direction");
+    return v;
+}
+
+Vec2 SceneLoader::readVec2(const Node& node) const {
+    if (!node.value.is_array() || node.value.size() != 2)
+        fail(node,
+             node.name + " must be an array of 2 numbers [u, v], got " + describe(node.value));
+    return {readNumber(node.at(0)), readNumber(node.at(1))};
+}
+
+Color SceneLoader::readColor(const Node& node) const {
+    if (node.value.is_number()) {
+        const float grey = readNumberAtLeast(node, 0, true);
+        return Color(grey);
+    }
+    if (!node.value.is_array() || node.value.size() != 3)
+        fail(node, node.name +
+                       " must be a colour: a number or an array of 3 numbers [r, g, b], got " +
+                       describe(node.value));
+    Color c;
+    float* channels[3] = {&c.r, &c.g, &c.b};
+    for (std::size_t i = 0; i < 3; ++i)
+        *channels[i] = readNumberAtLeast(node.at(i), 0, true);
+    return c;
+}
+
+}  // namespace lancer

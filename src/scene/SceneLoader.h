@@ -1,0 +1,75 @@
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "io/JsonDocument.h"
+#include "scene/Scene.h"
+
+namespace lancer {
+
+// Reads a scene file (the format of docs/SCENE-FORMAT.md) into a Scene. Every mistake in the file
+// is an InputError naming the file, line, column and key at fault.
+class SceneLoader {
+public:
+    // Problems that do not stop the render (a degenerate triangle dropped...) are appended to
+    // `warnings`, one line each, already prefixed with their place in the file.
+    static Scene loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings);
+    // The same for scene text in memory; `fileName` is used in messages.
+    static Scene loadString(const std::string& text, const std::string& fileName,
+                            std::vector<std::string>& warnings);
+
+private:
+    using json = nlohmann::json;
+
+    // A value of the document, where it is (a JSON pointer) and what to call it in messages.
+    struct Node {
+        const json& value;
+        std::string pointer;
+        std::string name;
+
+        Node operator[](const std::string& key) const;  // an object's member
+        Node at(std::size_t index) const;               // an array's element
+        bool has(const std::string& key) const { return value.contains(key); }
+    };
+
+    SceneLoader(const JsonDocument& doc, std::vector<std::string>& warnings);
+    Scene load();
+
+    void loadRender(const Node& node);
+    void loadCamera(const Node& node);
+    void loadMaterials(const Node& node);
+    std::unique_ptr<Material> loadMaterial(const Node& node);
+    std::shared_ptr<const Texture> loadTexture(const Node& node);
+    void loadObject(const Node& node);
+    void loadLight(const Node& node);
+    const Material* materialOf(const Node& object);
+
+    [[noreturn]] void fail(const Node& node, const std::string& message) const;
+    [[noreturn]] void failAtKey(const Node& node, const std::string& message) const;
+    void warn(const Node& node, const std::string& message) const;
+    void checkKeys(const Node& object, const std::string& what,
+                   const std::vector<std::string>& allowed) const;
+    void requireObject(const Node& node, const std::string& what) const;
+    void requireArray(const Node& node, const std::string& what) const;
+    Node require(const Node& object, const std::string& key, const std::string& what) const;
+
+    float readNumber(const Node& node) const;
+    float readNumberAtLeast(const Node& node, float minimum, bool inclusive) const;
+    int readInt(const Node& node, int minimum) const;
+    std::string readString(const Node& node) const;
+    Vec3 readVec3(const Node& node) const;
+    Vec3 readDirection(const Node& node) const;
+    Vec2 readVec2(const Node& node) const;
+    Color readColor(const Node& node) const;
+
+    const JsonDocument& doc_;
+    std::vector<std::string>& warnings_;
+    Scene scene_;
+    std::map<std::string, const Material*> materials_;
+    const Material* defaultMaterial_ = nullptr;
+};
+
+}  // namespace lancer
