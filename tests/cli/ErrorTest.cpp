@@ -1,0 +1,311 @@
+// Every error of the contract: the exit status, one line on stderr that says where and what
+// ("file:line:col: error: ..." for a scene file), and no output file (nor temporary file) left
+// behind; an output file that was there before the failing run is left as it was.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "LancerRun.h"
+
+namespace lancer::test {
+namespace {
+
+constexpr int kBadInput = 2;
+constexpr int kFailure = 1;
+
+// A valid scene; each scene case edits one fragment of it.
+const std::string kValidScene = R"({
+  "render": { "width": 8, "height": 6, "spp": 1, "max_depth": 3 },
+  "camera": { "position": [0, 1, 5], "look_at": [0, 0, 0], "vfov": 40 },
+  "materials": {
+    "glass": { "diffuse": 0, "transmission": 1, "ior": 1.5 },
+    "floor": { "diffuse": { "checker": { "even": 0.9, "odd": 0.1, "scale": 1 } } }
+  },
+  "objects": [
+    { "type": "sphere", "center": [0, 1, 0], "radius": 1, "material": "glass" },
+    { "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0], "material": "floor" }
+  ],
+  "lights": [
+    { "type": "point", "position": [2, 5, 3], "intensity": 40 }
+  ]
+}
+)";
+
+struct ErrorCase {
+    std::string name{};
+    // The scene file is kValidScene with `replace` replaced by `with`, in which '@' marks where
+    // the message must place the error ("scene.json:LINE:COLUMN: error: ") and is then removed.
+    // Without an edit, the scene is valid and the message must start with `prefix`.
+    std::string replace{}, with{};
+    std::string prefix{};
+    std::vector<std::string> mentions{};   // fragments that the message must contain
+    std::vector<std::string> arguments{};  // options after "scene.json -o OUTPUT"
+    int exitStatus = kBadInput;
+    std::string output = "out.png";
+    bool writeScene = true;        // false: there is no scene file
+    bool outputIsAFolder = false;  // out.png exists as a folder, so that the final rename fails
+};
+
+std::ostream& operator<<(std::ostream& out, const ErrorCase& c) {
+    return out << c.name;
+}
+
+struct SceneFile {
+    std::string text;
+    std::string messagePrefix;  // what the error message must start with
+};
+
+SceneFile sceneFileOf(const ErrorCase& c) {
+    if (c.replace.empty()) return {kValidScene, c.prefix};
+    std::string text = kValidScene;
+    const std::size_t at = text.find(c.replace);
+    const std::size_t marker = c.with.find('@');
+    if (at == std::string::npos || marker == std::string::npos)
+        throw std::logic_error("bad test case " + c.name);
+    text.replace(at, c.replace.size(), std::string(c.with).erase(marker, 1));
+    const std::size_t errorAt = at + marker;
+    const std::size_t lineStart = text.rfind('\n', errorAt - 1) + 1;  // npos + 1 == 0
+    const auto line = std::count(text.begin(), text.begin() + static_cast<long>(errorAt), '\n') + 1;
+    return {text, "scene.json:" + std::to_string(line) + ":" +
+                      std::to_string(errorAt - lineStart + 1) + ": error: "};
+}
+
+class CliError : public testing::TestWithParam<ErrorCase> {
+protected:
+    // Runs the case in a fresh folder (holding `preexistingOutput` as the output file, unless
+    // empty); checks the exit status and the message, and returns the folder's listing after.
+    std::vector<std::string> runCase(const std::string& preexistingOutput) {
+        const ErrorCase& c = GetParam();
+        const TempFolder folder;
+        const SceneFile scene = sceneFileOf(c);
+        if (c.writeScene) folder.write("scene.json", scene.text);
+        if (c.outputIsAFolder) fs::create_directory(folder / c.output);
+        if (!preexistingOutput.empty()) folder.write(c.output, preexistingOutput);
+
+        std::vector<std::string> arguments{"scene.json", "-o", c.output};
+        arguments.insert(arguments.end(), c.arguments.begin(), c.arguments.end());
+        const RunResult run = runLancer(arguments, folder.path());
+
+        EXPECT_EQ(run.exitStatus, c.exitStatus) << run;
+        const std::vector<std::string> lines = run.errorLines();
+        EXPECT_EQ(lines.size(), 1u) << "one line on stderr, got:\n" << run.standardError;
+        if (!lines.empty()) {
+            const std::string& message = lines.front();
+            EXPECT_EQ(message.rfind(scene.messagePrefix, 0), 0u)
+                << "the message starts with \"" << scene.messagePrefix << "\": " << message;
+            for (const std::string& fragment : c.mentions)
+                EXPECT_NE(message.find(fragment), std::string::npos)
+                    << "the message mentions " << fragment << ": " << message;
+        }
+        if (!preexistingOutput.empty()) {
+            EXPECT_EQ(readFile(folder / c.output), preexistingOutput)
+                << "the output that was there before is left as it was";
+        }
+        return folder.entries();
+    }
+
+    // What the folder held before the run.
+    static std::vector<std::string> inputs() {
+        const ErrorCase& c = GetParam();
+        std::vector<std::string> names;
+        if (c.writeScene) names.push_back("scene.json");
+        if (c.outputIsAFolder) names.push_back(c.output);
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+};
+
+TEST_P(CliError, ExitsWithOneLineNamingTheFaultAndWritesNothing) {
+    EXPECT_EQ(runCase(""), inputs()) << "no output file, no temporary file";
+}
+
+// The cases whose output file can exist before the run: its folder exists and it is a file.
+class CliErrorWithPreexistingOutput : public CliError {};
+
+TEST_P(CliErrorWithPreexistingOutput, LeavesItUndamaged) {
+    std::vector<std::string> expected = inputs();
+    expected.push_back(GetParam().output);
+    std::sort(expected.begin(), expected.end());
+    EXPECT_EQ(runCase("an image from an earlier run\n"), expected);
+}
+
+// A render this big would take hours: a case that uses it shows that its error is found before
+// rendering starts (the run is killed as a failure after kRunTimeout).
+const std::vector<std::string> kHugeRender{"--width", "8000", "--height", "8000", "--spp", "4096"};
+
+const ErrorCase kErrorCases[] = {
+    // --- the scene file: syntax ---
+    {.name = "MissingComma",
+     .replace = R"("spp": 1, "max_depth")",
+     .with = R"("spp": 1 @"max_depth")",
+     .mentions = {"syntax error"}},
+    {.name = "TrailingComma",
+     .replace = "40 }\n  ]",
+     .with = "40 },\n  @]",
+     .mentions = {"syntax error"}},
+    // At the end of the input, which is just past the last character.
+    {.name = "TruncatedFile",
+     .replace = "  ]\n}\n",
+     .with = "  ]@\n",
+     .mentions = {"syntax error"}},
+    // --- unknown keys, names and types ---
+    {.name = "UnknownKeyInSphere",
+     .replace = R"("radius": 1)",
+     .with = R"(@"raduis": 1)",
+     .mentions = {R"("raduis")", R"(did you mean "radius"?)"}},
+    {.name = "UnknownTopLevelKey",
+     .replace = R"("lights")",
+     .with = R"(@"light")",
+     .mentions = {R"("light")", R"(did you mean "lights"?)"}},
+    {.name = "UnknownKeyInMaterial",
+     .replace = R"("transmission": 1)",
+     .with = R"(@"transmision": 1)",
+     .mentions = {R"("transmision")", R"(did you mean "transmission"?)"}},
+    {.name = "UndefinedMaterial",
+     .replace = R"("material": "glass")",
+     .with = R"("material": @"glas")",
+     .mentions = {R"(material "glas" is not defined)", R"(did you mean "glass"?)"}},
+    {.name = "UnknownObjectType",
+     .replace = R"("type": "sphere")",
+     .with = R"("type": @"sphear")",
+     .mentions = {R"("sphear")", R"(did you mean "sphere"?)"}},
+    {.name = "UnknownLightType",
+     .replace = R"("type": "point")",
+     .with = R"("type": @"pont")",
+     .mentions = {R"("pont")", R"(did you mean "point"?)"}},
+    {.name = "UnknownIntegratorInScene",
+     .replace = R"("max_depth": 3 })",
+     .with = R"("max_depth": 3, "integrator": @"whited" })",
+     .mentions = {R"("whited")", R"(did you mean "whitted"?)"}},
+    {.name = "MissingRequiredKey",
+     .replace = R"({ "type": "sphere", "center": [0, 1, 0], "radius": 1,)",
+     .with = R"(@{ "type": "sphere", "center": [0, 1, 0],)",
+     .mentions = {R"("radius")"}},
+    {.name = "RadiusIsAString",
+     .replace = R"("radius": 1)",
+     .with = R"("radius": @"1")",
+     .mentions = {R"("radius")", "number"}},
+    {.name = "CenterHasTwoNumbers",
+     .replace = R"("center": [0, 1, 0])",
+     .with = R"("center": @[0, 1])",
+     .mentions = {R"("center")"}},
+    {.name = "WidthIsNotWhole",
+     .replace = R"("width": 8)",
+     .with = R"("width": @8.5)",
+     .mentions = {R"("width")"}},
+    {.name = "ColourIsAString",
+     .replace = R"("intensity": 40)",
+     .with = R"("intensity": @"bright")",
+     .mentions = {R"("intensity")"}},
+    {.name = "LightsIsNotAnArray",
+     .replace = R"([
+    { "type": "point", "position": [2, 5, 3], "intensity": 40 }
+  ])",
+     .with = R"(@{ "type": "point", "position": [2, 5, 3], "intensity": 40 })",
+     .mentions = {R"("lights")"}},
+    // --- bad values ---
+    {.name = "NegativeRadius",
+     .replace = R"("radius": 1)",
+     .with = R"("radius": @-1)",
+     .mentions = {R"("radius")"}},
+    {.name = "ZeroNormal",
+     .replace = R"("normal": [0, 1, 0])",
+     .with = R"("normal": @[0, 0, 0])",
+     .mentions = {R"("normal")"}},
+    {.name = "SppZero", .replace = R"("spp": 1)", .with = R"("spp": @0)", .mentions = {R"("spp")"}},
+    {.name = "NegativeMaxDepth",
+     .replace = R"("max_depth": 3)",
+     .with = R"("max_depth": @-1)",
+     .mentions = {R"("max_depth")"}},
+    {.name = "NegativeColour",
+     .replace = R"("even": 0.9)",
+     .with = R"("even": @-0.9)",
+     .mentions = {R"("even")"}},
+    {.name = "IorZero",
+     .replace = R"("ior": 1.5)",
+     .with = R"("ior": @0)",
+     .mentions = {R"("ior")"}},
+    {.name = "VfovOf180",
+     .replace = R"("vfov": 40)",
+     .with = R"("vfov": @180)",
+     .mentions = {R"("vfov")"}},
+    {.name = "CameraLooksAtItself",
+     .replace = R"("look_at": [0, 0, 0])",
+     .with = R"("look_at": @[0, 1, 5])",
+     .mentions = {R"("look_at")"}},
+    // --- the files ---
+    {.name = "MissingSceneFile",
+     .prefix = "scene.json: error: ",
+     .mentions = {"scene.json"},
+     .writeScene = false},
+    // --- options ---
+    {.name = "SppNotANumber",
+     .prefix = "lancer: error: ",
+     .mentions = {"--spp", "abc"},
+     .arguments = {"--spp", "abc"}},
+    {.name = "SppZeroOption",
+     .prefix = "lancer: error: ",
+     .mentions = {"--spp"},
+     .arguments = {"--spp", "0"}},
+    {.name = "WidthZeroOption",
+     .prefix = "lancer: error: ",
+     .mentions = {"--width"},
+     .arguments = {"--width", "0"}},
+    {.name = "CropMalformed",
+     .prefix = "lancer: error: ",
+     .mentions = {"--crop", "1,2,3"},
+     .arguments = {"--crop", "1,2,3"}},
+    {.name = "CropNotNumbers",
+     .prefix = "lancer: error: ",
+     .mentions = {"--crop"},
+     .arguments = {"--crop", "a,b,c,d"}},
+    {.name = "CropOutsideTheImage",
+     .prefix = "lancer: error: ",
+     .mentions = {"--crop"},
+     .arguments = {"--crop", "0,0,9,6"}},
+    {.name = "CropEmpty",
+     .prefix = "lancer: error: ",
+     .mentions = {"--crop"},
+     .arguments = {"--crop", "4,2,4,5"}},
+    {.name = "UnknownOption",
+     .prefix = "lancer: error: ",
+     .mentions = {"--fast"},
+     .arguments = {"--fast"}},
+    {.name = "UnknownIntegratorOption",
+     .prefix = "lancer: error: ",
+     .mentions = {"--integrator", "photon"},
+     .arguments = {"--integrator", "photon"}},
+    {.name = "UnknownOutputExtension",
+     .prefix = "lancer: error: ",
+     .mentions = {"out.xyz", ".png"},
+     .arguments = kHugeRender,
+     .output = "out.xyz"},
+    // --- failures that are not bad input: exit 1 ---
+    {.name = "OutputFolderMissing",
+     .prefix = "lancer: error: ",
+     .mentions = {"nowhere/out.png"},
+     .arguments = kHugeRender,
+     .exitStatus = kFailure,
+     .output = "nowhere/out.png"},
+    {.name = "OutputIsAFolder",
+     .prefix = "lancer: error: ",
+     .mentions = {"out.png"},
+     .exitStatus = kFailure,
+     .outputIsAFolder = true},
+};
+
+INSTANTIATE_TEST_SUITE_P(Cases, CliError, testing::ValuesIn(kErrorCases), CaseName());
+
+std::vector<ErrorCase> casesWithAPossibleOutputFile() {
+    std::vector<ErrorCase> cases;
+    for (const ErrorCase& c : kErrorCases)
+        if (!c.outputIsAFolder && c.output.find('/') == std::string::npos) cases.push_back(c);
+    return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, CliErrorWithPreexistingOutput,
+                         testing::ValuesIn(casesWithAPossibleOutputFile()), CaseName());
+
+}  // namespace
+}  // namespace lancer::test

@@ -1,0 +1,301 @@
+#include "LancerRun.h"
+
+#include <FreeImage.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <random>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#ifndef _WIN32
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <csignal>
+#else
+#include <cstdlib>
+#endif
+
+namespace lancer::test {
+
+// --- folders and files ---
+
+TempFolder::TempFolder() {
+    // Unique across the processes that ctest runs in parallel and across folders of one process.
+    static std::atomic<unsigned> counter{0};
+    std::random_device random;
+    for (;;) {
+        path_ = fs::temp_directory_path() /
+                ("lancer-cli-" + std::to_string(random()) + "-" + std::to_string(counter++));
+        if (fs::create_directory(path_)) return;
+    }
+}
+
+TempFolder::~TempFolder() {
+    std::error_code ignored;
+    fs::remove_all(path_, ignored);
+}
+
+fs::path TempFolder::write(const fs::path& name, const std::string& text) const {
+    const fs::path file = path_ / name;
+    fs::create_directories(file.parent_path());
+    std::ofstream out(file, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + file.string());
+    return file;
+}
+
+std::vector<std::string> TempFolder::entries(const fs::path& subfolder) const {
+    std::vector<std::string> names;
+    for (const fs::directory_entry& entry : fs::directory_iterator(path_ / subfolder))
+        names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+std::string readFile(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + path.string());
+    std::ostringstream text;
+    text << in.rdbuf();
+    return text.str();
+}
+
+// --- running lancer ---
+
+std::vector<std::string> RunResult::errorLines() const {
+    std::vector<std::string> lines;
+    std::istringstream in(standardError);
+    for (std::string line; std::getline(in, line);)
+        lines.push_back(line);
+    return lines;
+}
+
+std::ostream& operator<<(std::ostream& out, const RunResult& run) {
+    out << "exit status " << run.exitStatus;
+    if (run.terminatingSignal) out << ", killed by signal " << run.terminatingSignal;
+    if (run.timedOut) out << ", timed out";
+    return out << ", stderr:\n" << run.standardError;
+}
+
+#ifndef _WIN32
+
+LancerProcess::LancerProcess(const std::vector<std::string>& arguments,
+                             const fs::path& workingFolder) {
+    // Everything the child needs is prepared before fork(): after it, only async-signal-safe
+    // calls are allowed.
+    std::vector<std::string> argv{LANCER_EXE};
+    argv.insert(argv.end(), arguments.begin(), arguments.end());
+    std::vector<char*> cArgv;
+    for (std::string& argument : argv)
+        cArgv.push_back(argument.data());
+    cArgv.push_back(nullptr);
+    const std::string folder = workingFolder.string();
+    const std::string stdoutPath = (captureFolder_ / "stdout").string();
+    const std::string stderrPath = (captureFolder_ / "stderr").string();
+
+    pid_ = fork();
+    if (pid_ < 0) throw std::runtime_error("fork failed");
+    if (pid_ == 0) {
+        const int out = open(stdoutPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        const int err = open(stderrPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        if (out < 0 || err < 0 || dup2(out, STDOUT_FILENO) < 0 || dup2(err, STDERR_FILENO) < 0 ||
+            chdir(folder.c_str()) != 0)
+            _exit(127);
+        // Whatever the test runner does with Ctrl-C, lancer starts with the default action.
+        signal(SIGINT, SIG_DFL);
+        execv(cArgv[0], cArgv.data());
+        _exit(127);
+    }
+}
+
+LancerProcess::~LancerProcess() {
+    if (pid_ > 0) {
+        kill(pid_, SIGKILL);
+        waitpid(pid_, nullptr, 0);
+    }
+}
+
+void LancerProcess::sendSignal(int signal) const {
+    if (pid_ > 0) kill(pid_, signal);
+}
+
+RunResult LancerProcess::wait(std::chrono::milliseconds timeout) {
+    RunResult result;
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    int status = 0;
+    for (;;) {
+        const pid_t done = waitpid(pid_, &status, WNOHANG);
+        if (done == pid_) break;
+        if (done < 0) throw std::runtime_error("waitpid failed");
+        if (std::chrono::steady_clock::now() > deadline) {
+            kill(pid_, SIGKILL);
+            waitpid(pid_, &status, 0);
+            result.timedOut = true;
+            break;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    pid_ = -1;
+    if (WIFEXITED(status)) result.exitStatus = WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) result.terminatingSignal = WTERMSIG(status);
+    result.standardOutput = readFile(captureFolder_ / "stdout");
+    result.standardError = readFile(captureFolder_ / "stderr");
+    return result;
+}
+
+RunResult runLancer(const std::vector<std::string>& arguments, const fs::path& workingFolder,
+                    std::chrono::milliseconds timeout) {
+    return LancerProcess(arguments, workingFolder).wait(timeout);
+}
+
+#else
+
+// Windows: through the shell, without a timeout.
+RunResult runLancer(const std::vector<std::string>& arguments, const fs::path& workingFolder,
+                    std::chrono::milliseconds) {
+    const TempFolder captureFolder;
+    const auto quoted = [](const std::string& s) { return "\"" + s + "\""; };
+    std::string command = "cd /d " + quoted(workingFolder.string()) + " && " + quoted(LANCER_EXE);
+    for (const std::string& argument : arguments)
+        command += " " + quoted(argument);
+    command += " > " + quoted((captureFolder / "stdout").string()) + " 2> " +
+               quoted((captureFolder / "stderr").string());
+    RunResult result;
+    // cmd.exe drops the outer quotes of a command line that starts with one.
+    result.exitStatus = std::system(quoted(command).c_str());
+    result.standardOutput = readFile(captureFolder / "stdout");
+    result.standardError = readFile(captureFolder / "stderr");
+    return result;
+}
+
+#endif
+
+// --- images ---
+
+namespace {
+
+struct BitmapDeleter {
+    void operator()(FIBITMAP* bitmap) const { FreeImage_Unload(bitmap); }
+};
+using Bitmap = std::unique_ptr<FIBITMAP, BitmapDeleter>;
+
+// FreeImage reports why a load failed through a global callback; the last message goes into our
+// error.
+std::string lastFreeImageMessage;
+void recordFreeImageMessage(FREE_IMAGE_FORMAT, const char* message) {
+    lastFreeImageMessage = message ? message : "";
+}
+
+}  // namespace
+
+Image loadImage(const fs::path& path) {
+    FreeImage_SetOutputMessage(recordFreeImageMessage);
+    lastFreeImageMessage.clear();
+    const std::string name = path.string();
+    const FREE_IMAGE_FORMAT format = FreeImage_GetFileType(name.c_str(), 0);
+    if (format == FIF_UNKNOWN) throw std::runtime_error(name + ": not an image FreeImage knows");
+    const Bitmap loaded(FreeImage_Load(format, name.c_str(), 0));
+    if (!loaded)
+        throw std::runtime_error(name + ": FreeImage cannot load it (" + lastFreeImageMessage +
+                                 ")");
+
+    Image image;
+    image.width = static_cast<int>(FreeImage_GetWidth(loaded.get()));
+    image.height = static_cast<int>(FreeImage_GetHeight(loaded.get()));
+    image.pixels.resize(static_cast<std::size_t>(image.width) *
+                        static_cast<std::size_t>(image.height));
+    const bool isFloat = FreeImage_GetImageType(loaded.get()) != FIT_BITMAP;
+    image.encoding = isFloat ? Image::Encoding::LinearFloat : Image::Encoding::EightBit;
+    const Bitmap rgb(isFloat ? FreeImage_ConvertToRGBF(loaded.get())
+                             : FreeImage_ConvertTo24Bits(loaded.get()));
+    if (!rgb) throw std::runtime_error(name + ": cannot convert to RGB");
+
+    for (int y = 0; y < image.height; ++y) {
+        // Scanline 0 is the bottom row.
+        BYTE* scanline = FreeImage_GetScanLine(rgb.get(), image.height - 1 - y);
+        for (int x = 0; x < image.width; ++x) {
+            Image::Rgb& pixel = image.pixels[static_cast<std::size_t>(y * image.width + x)];
+            if (isFloat) {
+                const FIRGBF& p = reinterpret_cast<const FIRGBF*>(scanline)[x];
+                pixel = {p.red, p.green, p.blue};
+            } else {
+                const BYTE* p = scanline + 3 * x;
+                pixel = {float(p[FI_RGBA_RED]), float(p[FI_RGBA_GREEN]), float(p[FI_RGBA_BLUE])};
+            }
+        }
+    }
+    return image;
+}
+
+namespace {
+
+void requireSameSize(const Image& a, const Image& b) {
+    if (a.width != b.width || a.height != b.height)
+        throw std::runtime_error("images of different sizes: " + std::to_string(a.width) + "x" +
+                                 std::to_string(a.height) + " and " + std::to_string(b.width) +
+                                 "x" + std::to_string(b.height));
+}
+
+}  // namespace
+
+double maxAbsoluteDifference(const Image& a, const Image& b) {
+    requireSameSize(a, b);
+    double largest = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i)
+        for (std::size_t c = 0; c < 3; ++c)
+            largest = std::max(largest, std::abs(double(a.pixels[i][c]) - b.pixels[i][c]));
+    return largest;
+}
+
+double meanAbsoluteDifference(const Image& a, const Image& b) {
+    requireSameSize(a, b);
+    double sum = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i)
+        for (std::size_t c = 0; c < 3; ++c)
+            sum += std::abs(double(a.pixels[i][c]) - b.pixels[i][c]);
+    return sum / (3.0 * static_cast<double>(a.pixels.size()));
+}
+
+double fractionOfPixelsWithin(const Image& a, const Image& b, double absolute, double relative) {
+    requireSameSize(a, b);
+    std::size_t within = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+        bool close = true;
+        for (std::size_t c = 0; c < 3; ++c)
+            close = close && std::abs(double(a.pixels[i][c]) - b.pixels[i][c]) <=
+                                 absolute + relative * std::abs(double(b.pixels[i][c]));
+        within += close ? 1 : 0;
+    }
+    return static_cast<double>(within) / static_cast<double>(a.pixels.size());
+}
+
+// --- rendering ---
+
+RenderedFile renderScene(const nlohmann::json& scene, const std::vector<std::string>& options,
+                         const std::string& outputName) {
+    const TempFolder folder;
+    folder.write("scene.json", scene.dump(2));
+    std::vector<std::string> arguments{"scene.json", "-o", outputName, "--quiet"};
+    arguments.insert(arguments.end(), options.begin(), options.end());
+    const RunResult run = runLancer(arguments, folder.path());
+    if (run.exitStatus != 0) {
+        std::ostringstream message;
+        message << "lancer failed to render: " << run;
+        throw std::runtime_error(message.str());
+    }
+    return {readFile(folder / outputName), loadImage(folder / outputName)};
+}
+
+nlohmann::json loadWhittedScene() {
+    return nlohmann::json::parse(readFile(fs::path(LANCER_SOURCE_DIR) / "scenes/whitted.json"),
+                                 nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
+}
+
+}  // namespace lancer::test

@@ -1,0 +1,130 @@
+#pragma once
+
+// The vocabulary of the end-to-end tests: run the lancer program in a fresh folder, capture how it
+// ended, and read back the images it wrote.
+
+#include <gtest/gtest.h>
+#include <array>
+#include <chrono>
+#include <filesystem>
+#include <iosfwd>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace lancer::test {
+
+namespace fs = std::filesystem;
+
+// A fresh, empty folder under the system's temporary folder, deleted with its contents at the end.
+class TempFolder {
+public:
+    TempFolder();
+    ~TempFolder();
+    TempFolder(const TempFolder&) = delete;
+    TempFolder& operator=(const TempFolder&) = delete;
+
+    const fs::path& path() const { return path_; }
+    fs::path operator/(const fs::path& name) const { return path_ / name; }
+
+    // Writes `text` to the file `name` inside the folder and returns its path.
+    fs::path write(const fs::path& name, const std::string& text) const;
+    // The names of the entries (files and folders, not recursive) of the folder or of one of its
+    // subfolders, sorted.
+    std::vector<std::string> entries(const fs::path& subfolder = {}) const;
+
+private:
+    fs::path path_;
+};
+
+// The bytes of a file; throws std::runtime_error when it cannot be read.
+std::string readFile(const fs::path& path);
+
+// How a run of lancer ended.
+struct RunResult {
+    int exitStatus = -1;         // the exit code, or -1 when the process did not exit by itself
+    int terminatingSignal = 0;   // the signal that killed it, if one did
+    bool timedOut = false;       // killed by the test for running too long
+    std::string standardOutput;  // what it printed
+    std::string standardError;
+
+    // standardError cut into lines (without their '\n').
+    std::vector<std::string> errorLines() const;
+};
+std::ostream& operator<<(std::ostream& out, const RunResult& run);
+
+// Long enough for any render of this suite under AddressSanitizer; a run that takes longer is a
+// hang (or a render that should never have started).
+constexpr std::chrono::seconds kRunTimeout{60};
+
+// Runs lancer with `arguments` in `workingFolder` and waits for it to end.
+RunResult runLancer(const std::vector<std::string>& arguments, const fs::path& workingFolder,
+                    std::chrono::milliseconds timeout = kRunTimeout);
+
+#ifndef _WIN32
+// A lancer process running in the background, for tests that signal it while it works.
+class LancerProcess {
+public:
+    LancerProcess(const std::vector<std::string>& arguments, const fs::path& workingFolder);
+    ~LancerProcess();  // kills the process if it is still running
+    LancerProcess(const LancerProcess&) = delete;
+    LancerProcess& operator=(const LancerProcess&) = delete;
+
+    void sendSignal(int signal) const;
+    // Waits for the process to end; after `timeout` it is killed and the result says timedOut.
+    RunResult wait(std::chrono::milliseconds timeout = kRunTimeout);
+
+private:
+    TempFolder captureFolder_;  // its standard output and error, kept out of the working folder
+    int pid_ = -1;
+};
+#endif
+
+// A decoded image, rows top-down as in lancer's film (FreeImage stores them bottom-up).
+struct Image {
+    using Rgb = std::array<float, 3>;
+    // Float images hold linear radiance; 8-bit images hold the stored values 0..255.
+    enum class Encoding { LinearFloat, EightBit };
+
+    int width = 0;
+    int height = 0;
+    Encoding encoding = Encoding::LinearFloat;
+    std::vector<Rgb> pixels;
+
+    const Rgb& at(int x, int y) const { return pixels[static_cast<std::size_t>(y * width + x)]; }
+};
+
+// Loads an image in any format FreeImage reads; throws std::runtime_error when it cannot.
+Image loadImage(const fs::path& path);
+
+// The largest |a - b| over all channels of two images of the same size.
+double maxAbsoluteDifference(const Image& a, const Image& b);
+// The mean |a - b| over all channels.
+double meanAbsoluteDifference(const Image& a, const Image& b);
+// The fraction of pixels whose every channel satisfies |a - b| <= absolute + relative * |b|.
+double fractionOfPixelsWithin(const Image& a, const Image& b, double absolute, double relative);
+
+// A render's output file: its bytes and its decoded image.
+struct RenderedFile {
+    std::string bytes;
+    Image image;
+};
+
+// Writes `scene` as scene.json in a fresh folder, runs `lancer scene.json -o OUTPUT --quiet
+// OPTIONS` there and reads the output back. Throws std::runtime_error (with lancer's message) when
+// the run fails, which fails the calling test.
+RenderedFile renderScene(const nlohmann::json& scene, const std::vector<std::string>& options = {},
+                         const std::string& outputName = "out.pfm");
+
+// Names the tests of a parameterized suite after the `name` member of their cases.
+struct CaseName {
+    template <typename Case>
+    std::string operator()(const testing::TestParamInfo<Case>& test) const {
+        return test.param.name;
+    }
+};
+
+// scenes/whitted.json of the source tree, parsed (comments allowed).
+nlohmann::json loadWhittedScene();
+
+}  // namespace lancer::test

@@ -1,0 +1,171 @@
+// JSON with comments, and the line and column of every value and key, for error messages.
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "io/InputError.h"
+#include "io/JsonDocument.h"
+
+namespace lancer {
+namespace {
+
+// Columns below are counted by hand from the text; both count from 1.
+const char* const kDocument = R"({
+  "a": 1,
+  "b": [true, false, null],
+  "c": {"d": "x\"y", "e": -2.5e3},
+  // a comment before a member
+  "f": /* inline */ [ {"g": 0} ]
+})";
+
+testing::AssertionResult isAt(const SourceLocation& location, int line, int column) {
+    if (location.line == line && location.column == column) return testing::AssertionSuccess();
+    return testing::AssertionFailure() << "at " << location.line << ":" << location.column
+                                       << ", expected " << line << ":" << column;
+}
+
+TEST(JsonDocumentTest, ParsesValuesWithCommentsIgnored) {
+    const JsonDocument doc = JsonDocument::parse(kDocument, "doc.json");
+    EXPECT_EQ(doc.fileName(), "doc.json");
+    EXPECT_EQ(doc.root()["a"], 1);
+    EXPECT_EQ(doc.root()["b"][1], false);
+    EXPECT_EQ(doc.root()["c"]["d"], "x\"y");
+    EXPECT_EQ(doc.root()["c"]["e"], -2500.0);
+    EXPECT_EQ(doc.root()["f"][0]["g"], 0);
+}
+
+TEST(JsonDocumentTest, LocatesTheRoot) {
+    const JsonDocument doc = JsonDocument::parse(kDocument, "doc.json");
+    EXPECT_TRUE(isAt(doc.valueLocation(""), 1, 1));
+    EXPECT_TRUE(isAt(doc.keyLocation(""), 1, 1));
+}
+
+TEST(JsonDocumentTest, LocatesScalarValues) {
+    const JsonDocument doc = JsonDocument::parse(kDocument, "doc.json");
+    EXPECT_TRUE(isAt(doc.valueLocation("/a"), 2, 8));
+    EXPECT_TRUE(isAt(doc.valueLocation("/b/0"), 3, 9));   // true
+    EXPECT_TRUE(isAt(doc.valueLocation("/b/1"), 3, 15));  // false
+    EXPECT_TRUE(isAt(doc.valueLocation("/b/2"), 3, 22));  // null
+    EXPECT_TRUE(isAt(doc.valueLocation("/c/d"), 4, 14));  // the string's opening quote
+    EXPECT_TRUE(isAt(doc.valueLocation("/c/e"), 4, 27));  // the number's sign
+    EXPECT_TRUE(isAt(doc.valueLocation("/f/0/g"), 6, 29));
+}
+
+TEST(JsonDocumentTest, LocatesContainers) {
+    const JsonDocument doc = JsonDocument::parse(kDocument, "doc.json");
+    EXPECT_TRUE(isAt(doc.valueLocation("/b"), 3, 8));
+    EXPECT_TRUE(isAt(doc.valueLocation("/c"), 4, 8));
+    EXPECT_TRUE(isAt(doc.valueLocation("/f"), 6, 21));  // after the comments
+    EXPECT_TRUE(isAt(doc.valueLocation("/f/0"), 6, 23));
+}
+
+TEST(JsonDocumentTest, LocatesKeys) {
+    const JsonDocument doc = JsonDocument::parse(kDocument, "doc.json");
+    EXPECT_TRUE(isAt(doc.keyLocation("/a"), 2, 3));
+    EXPECT_TRUE(isAt(doc.keyLocation("/c"), 4, 3));
+    EXPECT_TRUE(isAt(doc.keyLocation("/c/d"), 4, 9));
+    EXPECT_TRUE(isAt(doc.keyLocation("/c/e"), 4, 22));  // after a string with an escaped quote
+    EXPECT_TRUE(isAt(doc.keyLocation("/f"), 6, 3));     // after a comment line
+    EXPECT_TRUE(isAt(doc.keyLocation("/f/0/g"), 6, 24));
+    // An array element has no key: its value's place stands in.
+    EXPECT_TRUE(isAt(doc.keyLocation("/b/1"), 3, 15));
+}
+
+TEST(JsonDocumentTest, UnknownPointerHasNoLocation) {
+    const JsonDocument doc = JsonDocument::parse(kDocument, "doc.json");
+    EXPECT_TRUE(isAt(doc.valueLocation("/nothing"), 0, 0));
+    EXPECT_TRUE(isAt(doc.keyLocation("/b/7"), 0, 0));
+}
+
+TEST(JsonDocumentTest, LocatesNumbersWrittenWithoutSpaces) {
+    const JsonDocument doc = JsonDocument::parse("[1,-20,3.5e-1,[0]]", "n.json");
+    EXPECT_TRUE(isAt(doc.valueLocation("/0"), 1, 2));
+    EXPECT_TRUE(isAt(doc.valueLocation("/1"), 1, 4));
+    EXPECT_TRUE(isAt(doc.valueLocation("/2"), 1, 8));
+    EXPECT_TRUE(isAt(doc.valueLocation("/3"), 1, 15));
+    EXPECT_TRUE(isAt(doc.valueLocation("/3/0"), 1, 16));
+}
+
+TEST(JsonDocumentTest, LocatesValuesAfterCommentsOnEarlierLines) {
+    const std::string text = "{\"radius\": // the size\n   /* still\n coming */ 2.5, \"x\": 1}";
+    const JsonDocument doc = JsonDocument::parse(text, "c.json");
+    EXPECT_TRUE(isAt(doc.keyLocation("/radius"), 1, 2));
+    EXPECT_TRUE(isAt(doc.valueLocation("/radius"), 3, 12));
+    EXPECT_TRUE(isAt(doc.keyLocation("/x"), 3, 17));
+}
+
+TEST(JsonDocumentTest, KeysWithEscapesAndPointerCharacters) {
+    const std::string text = R"({"say \"hi\"": 1, "a/b": 2, "c~d": {"e\\": 3}})";
+    const JsonDocument doc = JsonDocument::parse(text, "k.json");
+    EXPECT_EQ(JsonDocument::child("", "say \"hi\""), "/say \"hi\"");
+    EXPECT_EQ(JsonDocument::child("", "a/b"), "/a~1b");
+    EXPECT_EQ(JsonDocument::child("/x", "c~d"), "/x/c~0d");
+    EXPECT_EQ(JsonDocument::child("/list", std::size_t{3}), "/list/3");
+    EXPECT_TRUE(isAt(doc.keyLocation(JsonDocument::child("", "say \"hi\"")), 1, 2));
+    EXPECT_TRUE(isAt(doc.valueLocation(JsonDocument::child("", "say \"hi\"")), 1, 16));
+    EXPECT_TRUE(isAt(doc.keyLocation("/a~1b"), 1, 19));
+    EXPECT_TRUE(isAt(doc.keyLocation("/c~0d"), 1, 29));
+    EXPECT_TRUE(isAt(doc.keyLocation("/c~0d/e\\"), 1, 37));
+    EXPECT_TRUE(isAt(doc.valueLocation("/c~0d/e\\"), 1, 44));
+}
+
+// The message of the InputError that parsing `text` throws.
+std::string parseError(const std::string& text) {
+    try {
+        JsonDocument::parse(text, "bad.json");
+    } catch (const InputError& e) {
+        return e.what();
+    }
+    return "(no error)";
+}
+
+// Checks that the message starts with "bad.json:line:column: error: ".
+testing::AssertionResult reportsAt(const std::string& message, int line, int column) {
+    const std::string prefix =
+        "bad.json:" + std::to_string(line) + ":" + std::to_string(column) + ": error: ";
+    if (message.rfind(prefix, 0) == 0 && message.size() > prefix.size())
+        return testing::AssertionSuccess();
+    return testing::AssertionFailure()
+           << "message \"" << message << "\" does not start with \"" << prefix << "\" and go on";
+}
+
+// A token in the wrong place is shown from its first character.
+TEST(JsonDocumentTest, UnexpectedTokensAreShownFromTheirStart) {
+    EXPECT_TRUE(reportsAt(parseError("{\n  \"a\": 1,\n}"), 3, 1));  // trailing comma
+    EXPECT_TRUE(reportsAt(parseError("{\"a\" 1}"), 1, 6));          // missing colon
+    EXPECT_TRUE(reportsAt(parseError("{\"a\" 123}"), 1, 6));
+    EXPECT_TRUE(reportsAt(parseError("[1, 2\n  -3.5]"), 2, 3));         // missing comma
+    EXPECT_TRUE(reportsAt(parseError("{\"a\": 1\n \"b\": 2}"), 2, 2));  // before a key
+    EXPECT_TRUE(reportsAt(parseError("{\"a\": \"x\\\"y\" \"z\"}"), 1, 14));
+    EXPECT_TRUE(reportsAt(parseError("[1 true]"), 1, 4));
+    EXPECT_TRUE(reportsAt(parseError("[1e999]"), 1, 2));  // out of range
+}
+
+// Text that is not JSON is shown where the reading stopped.
+TEST(JsonDocumentTest, UnreadableTextIsShownWhereReadingStopped) {
+    EXPECT_TRUE(reportsAt(parseError("{\"a\": tru }"), 1, 10));
+    EXPECT_TRUE(reportsAt(parseError("{} x"), 1, 4));  // text after the end
+    EXPECT_TRUE(reportsAt(parseError("[\"bad \\q escape\"]"), 1, 8));
+    EXPECT_TRUE(reportsAt(parseError("// only\n/* comments */"), 2, 14));
+}
+
+TEST(JsonDocumentTest, ErrorsAtTheEndOfTheTextPointAtItsLastCharacter) {
+    EXPECT_TRUE(reportsAt(parseError("{\"a\": 1"), 1, 7));
+    EXPECT_TRUE(reportsAt(parseError("{\"a\": \"abc"), 1, 10));
+}
+
+TEST(JsonDocumentTest, ErrorMessagesKeepOnlyTheirOwnPosition) {
+    // nlohmann's "[json.exception.parse_error.101] parse error at line 1, column 6" is replaced
+    // by the position in front.
+    const std::string message = parseError("{\"a\" 1}");
+    EXPECT_EQ(message.find("json.exception"), std::string::npos) << message;
+    EXPECT_EQ(message.find("line 1"), std::string::npos) << message;
+}
+
+TEST(JsonDocumentTest, EmptyTextIsAnError) {
+    EXPECT_TRUE(reportsAt(parseError(""), 1, 1));
+}
+
+}  // namespace
+}  // namespace lancer
