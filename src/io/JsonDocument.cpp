@@ -1,6 +1,7 @@
 #include "io/JsonDocument.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <iterator>
 #include <vector>
@@ -97,7 +98,7 @@ public:
     bool number_integer(number_integer_t) { return number(); }
     bool number_unsigned(number_unsigned_t) { return number(); }
     bool number_float(number_float_t, const string_t&) { return number(); }
-    bool string(string_t&) { return scalar(openingQuote()); }
+    bool string(string_t&) { return scalar(openingQuote(lastRead_)); }
     bool binary(binary_t&) { return true; }
     bool start_object(std::size_t) { return open(false); }
     bool start_array(std::size_t) { return open(true); }
@@ -106,17 +107,18 @@ public:
     bool key(string_t& k) {
         Container& c = stack_.back();
         c.pendingKey = k;
-        doc_.positions_[JsonDocument::child(c.pointer, k)].key = locate(openingQuote());
+        doc_.positions_[JsonDocument::child(c.pointer, k)].key = locate(openingQuote(lastRead_));
         return true;
     }
-    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& e) {
+    bool parse_error(std::size_t position, const std::string&,
+                     const nlohmann::detail::exception& e) {
         // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L,
         // column C: what"; keep only "what", the position is given in our own format.
         std::string message = e.what();
         const std::size_t colon = message.find(": ", message.find("column"));
         if (colon != std::string::npos) message = message.substr(colon + 2);
         errorMessage = message;
-        errorOffset = std::min(lastRead_, text_.empty() ? 0 : text_.size() - 1);
+        errorOffset = errorPlace(position);
         return false;
     }
 
@@ -131,9 +133,28 @@ private:
         std::string pendingKey;
     };
 
-    // The value just read is a string ending at lastRead_: find its unescaped opening quote.
-    std::size_t openingQuote() const {
-        std::size_t i = lastRead_;
+    // Where a syntax error is shown. `position` counts the characters the lexer consumed; the
+    // last of them ends either a token the parser did not expect, shown from its first
+    // character, or the text the lexer could not read, shown where it stopped. Past the end of
+    // the text (which counts one more), its last character stands in.
+    std::size_t errorPlace(std::size_t position) const {
+        if (text_.empty()) return 0;
+        if (position == 0 || position > text_.size()) return text_.size() - 1;
+        const std::size_t last = position - 1;
+        if (text_[last] == '"') return openingQuote(last);
+        const bool inWord = std::isalpha(static_cast<unsigned char>(text_[last])) != 0;
+        const char* tokenCharacters =
+            inWord ? "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ" : "0123456789+-.eE";
+        if (!inWord && !std::isdigit(static_cast<unsigned char>(text_[last]))) return last;
+        std::size_t start = last;
+        while (start > 0 && std::strchr(tokenCharacters, text_[start - 1]) != nullptr)
+            --start;
+        return start;
+    }
+
+    // A string ends with the quote at `closingQuote`: find its unescaped opening quote.
+    std::size_t openingQuote(std::size_t closingQuote) const {
+        std::size_t i = closingQuote;
         while (i > 0) {
             --i;
             if (text_[i] != '"') continue;

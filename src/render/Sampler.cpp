@@ -58,6 +58,18 @@ float hashedFloat(std::uint32_t i, std::uint32_t pattern) {
     return static_cast<float>(i >> 8) * 0x1p-24f;
 }
 
+// Moves u, computed as (stratum + jitter) / strata in float, back into its stratum
+// [stratum / strata, (stratum + 1) / strata): with a jitter close to 1 the rounding of the sum or
+// of the quotient can land on the next stratum's edge (which also reaches 1 at the top), and
+// with a jitter of 0 below an edge that is not a float. Exact tests: u * strata fits a double.
+float keepInStratum(float u, std::uint32_t stratum, std::uint32_t strata) {
+    while (static_cast<double>(u) * strata >= stratum + 1.0)
+        u = nextFloatDown(u);
+    while (static_cast<double>(u) * strata < stratum)
+        u = nextFloatUp(u);
+    return u;
+}
+
 }  // namespace
 
 Sampler::Sampler(std::uint64_t seed, int pixelX, int pixelY, int samplesPerPixel)
@@ -90,8 +102,8 @@ Vec2 Sampler::get2D() {
     const float y =
         (static_cast<float>(s / m) + (static_cast<float>(sx) + jy) / static_cast<float>(m)) /
         static_cast<float>(n);
-    // Rounding can reach 1 in the last ulp; the contract is [0,1).
-    return {std::min(x, kOneMinusEpsilon), std::min(y, kOneMinusEpsilon)};
+    // x lies in stratum (s % m) n + sy of the m n columns, y in (s / m) m + sx of the rows.
+    return {keepInStratum(x, (s % m) * n + sy, m * n), keepInStratum(y, (s / m) * m + sx, m * n)};
 }
 
 float Sampler::get1D() {
@@ -100,7 +112,7 @@ float Sampler::get1D() {
     const std::uint32_t stratum = permute(static_cast<std::uint32_t>(sampleIndex_), count, pattern);
     const float u = (static_cast<float>(stratum) + hashedFloat(stratum, pattern * 0x68bc21eb)) /
                     static_cast<float>(count);
-    return std::min(u, kOneMinusEpsilon);
+    return keepInStratum(u, stratum, count);
 }
 
 }  // namespace lancer
