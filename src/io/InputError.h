@@ -16,11 +16,16 @@ struct SourceLocation {
 class InputError : public std::runtime_error {
 public:
     InputError(const std::string& file, const SourceLocation& where, const std::string& message)
-        : std::runtime_error(format(file, where, message)) {}
+        : std::runtime_error(format(file, where, message)), message_(message) {}
     InputError(const std::string& file, const std::string& message)
         : InputError(file, SourceLocation{}, message) {}
 
+    // The message alone, without the file and position.
+    const std::string& message() const { return message_; }
+
 private:
+    std::string message_;
+
     static std::string format(const std::string& file, const SourceLocation& where,
                               const std::string& message) {
         std::string prefix = file;
