@@ -46,6 +46,7 @@ struct Options {
     std::optional<std::string> crop;
     bool window = false;
     bool quiet = false;
+    bool stats = false;
 };
 
 int fail(int status, const std::string& message) {
@@ -75,6 +76,21 @@ std::optional<PixelWindow> parseCrop(const std::string& text, int width, int hei
         return std::nullopt;
     }
     return w;
+}
+
+void printStatistics(const Scene& scene) {
+    const Scene::Statistics& s = scene.statistics();
+    const double megabytes = static_cast<double>(s.meshBytes) / (1 << 20);
+    std::fprintf(stderr, "stats: %zu objects in the BVH (%zu bytes of nodes), %zu planes\n",
+                 scene.boundedShapeCount(), scene.accelerationStructureBytes(),
+                 scene.unboundedShapeCount());
+    std::fprintf(stderr, "stats: %zu triangles stored, %zu drawn (instances)\n", s.uniqueTriangles,
+                 s.instancedTriangles);
+    if (s.uniqueTriangles > 0)
+        std::fprintf(
+            stderr, "stats: meshes and their BVHs: %.2f MB, %.1f bytes per stored triangle\n",
+            megabytes, static_cast<double>(s.meshBytes) / static_cast<double>(s.uniqueTriangles));
+    std::fprintf(stderr, "stats: scene loaded in %.3f s\n", s.loadSeconds);
 }
 
 std::string describeRate(std::uint64_t rays, double seconds) {
@@ -147,6 +163,7 @@ int run(const Options& options) {
                   << output.string() << '\n';
         return kExitInterrupted;
     }
+    if (options.stats) printStatistics(scene);
     if (!options.quiet)
         std::cerr << "lancer: " << output.string() << ": " << settings.width << "x"
                   << settings.height << ", " << settings.samplesPerPixel << " spp, "
@@ -186,6 +203,8 @@ int main(int argc, char** argv) {
                    "Render only the pixels X0,Y0,X1,Y1 (inclusive-exclusive)");
     app.add_flag("--window", options.window, "Show the image in a window while it renders");
     app.add_flag("--quiet", options.quiet, "No progress bar or summary, only errors");
+    app.add_flag("--stats", options.stats,
+                 "Print scene statistics: objects, triangles, memory per triangle");
 
     try {
         app.parse(argc, argv);

@@ -1,11 +1,14 @@
 #pragma once
 
+#include <cmath>
+
 #include "geometry/Ray.h"
 #include "math/Vec2.h"
 #include "math/Vec3.h"
 
 namespace lancer {
 
+class Material;
 class Shape;
 
 // The intersection record: where a ray met a surface, and what a shader needs to know about it.
@@ -15,8 +18,32 @@ struct Hit {
     Vec3 pError;          // bound on the absolute error of p, per component
     Vec3 ng;              // unit geometric normal on the shape's true side (outside / front)
     Vec3 ns;              // unit shading normal, in the same hemisphere as ng
+    Vec3 dpdu, dpdv;      // how p moves with u and with v along the surface
     Vec2 uv;              // surface coordinates, for textures
+    // How uv changes from this pixel to the next one right (x) and down (y): the footprint that
+    // texture filtering averages over. Zero when unknown (point sampling).
+    float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
     const Shape* shape = nullptr;
+    const Material* material = nullptr;
+
+    // Sets the uv footprint from the footprint of a pixel on the surface, dpdx and dpdy (how p
+    // moves from pixel to pixel), by solving dpdx = dudx dpdu + dvdx dpdv in the least-squares
+    // sense (the two sides need not be exactly coplanar), and likewise for y.
+    void setUvFootprint(const Vec3& dpdx, const Vec3& dpdy) {
+        const float a00 = dot(dpdu, dpdu), a01 = dot(dpdu, dpdv), a11 = dot(dpdv, dpdv);
+        const float det = a00 * a11 - a01 * a01;
+        if (!(std::abs(det) > 0)) return;
+        const float invDet = 1 / det;
+        const auto solve = [&](const Vec3& dp, float& du, float& dv) {
+            const float b0 = dot(dpdu, dp), b1 = dot(dpdv, dp);
+            // Far beyond any texture's size: a footprint that large is as blurred as it gets.
+            constexpr float kLimit = 1e8f;
+            du = clamp((a11 * b0 - a01 * b1) * invDet, -kLimit, kLimit);
+            dv = clamp((a00 * b1 - a01 * b0) * invDet, -kLimit, kLimit);
+        };
+        solve(dpdx, dudx, dvdx);
+        solve(dpdy, dudy, dvdy);
+    }
 
     // True when the ray arrived from the side ng points to.
     bool frontFace(const Ray& ray) const { return dot(ray.direction, ng) < 0; }

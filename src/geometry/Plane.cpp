@@ -5,17 +5,19 @@ namespace lancer {
 Plane::Plane(const Vec3& point, const Vec3& normal, const Material* material)
     : Shape(material), point_(point), normal_(normalize(normal)) {
     // uv are world coordinates: (x, z) for a plane facing y, (x, y) facing z, (y, z) facing x.
-    switch (maxDimension(normal_)) {
-        case 0:
-            uAxis_ = 1, vAxis_ = 2;
-            break;
-        case 1:
-            uAxis_ = 0, vAxis_ = 2;
-            break;
-        default:
-            uAxis_ = 0, vAxis_ = 1;
-            break;
-    }
+    const int normalAxis = maxDimension(normal_);
+    uAxis_ = normalAxis == 0 ? 1 : 0;
+    vAxis_ = normalAxis == 2 ? 1 : 2;
+    // Moving by one along the u axis, the point must also move along the normal's main axis to
+    // stay on the plane; likewise for v.
+    dpdu_[uAxis_] = 1;
+    dpdu_[normalAxis] = -normal_[uAxis_] / normal_[normalAxis];
+    dpdv_[vAxis_] = 1;
+    dpdv_[normalAxis] = -normal_[vAxis_] / normal_[normalAxis];
+}
+
+Bounds3 Plane::bounds() const {
+    return {Vec3(-kInfinity), Vec3(kInfinity)};
 }
 
 bool Plane::intersect(const Ray& ray, float tMax, Hit& hit) const {
@@ -39,8 +41,11 @@ bool Plane::intersect(const Ray& ray, float tMax, Hit& hit) const {
     hit.pError = gamma(2) * abs(p);
     hit.ng = normal_;
     hit.ns = normal_;
+    hit.dpdu = dpdu_;
+    hit.dpdv = dpdv_;
     hit.uv = {p[uAxis_], p[vAxis_]};
     hit.shape = this;
+    hit.material = material();
     return true;
 }
 

@@ -2,12 +2,14 @@
 
 #include "geometry/Hit.h"
 #include "geometry/Ray.h"
+#include "math/Bounds3.h"
 
 namespace lancer {
 
 class Material;
 
-// A surface a ray can hit. Each shape carries the material it is made of.
+// A surface a ray can hit. A shape may carry the material it is made of; shapes that carry
+// several (meshes) leave it null and set Hit::material themselves.
 class Shape {
 public:
     explicit Shape(const Material* material) : material_(material) {}
@@ -16,14 +18,30 @@ public:
     Shape& operator=(const Shape&) = delete;
 
     // Finds the nearest intersection with 0 < t < tMax. On success fills `hit` (t, p, pError,
-    // ng, ns, uv, shape) and returns true; on failure leaves `hit` untouched.
+    // ng, ns, dpdu, dpdv, uv, shape, material) and returns true; on failure leaves `hit` untouched.
     virtual bool intersect(const Ray& ray, float tMax, Hit& hit) const = 0;
 
-    // Whether the material's emission leaves both sides of the surface (spheres and planes) or
+    // Whether anything is hit with 0 < t < tMax: shadow rays, which need no hit record and can
+    // stop at the first hit found.
+    virtual bool occluded(const Ray& ray, float tMax) const {
+        Hit hit;
+        return intersect(ray, tMax, hit);
+    }
+
+    // The box the shape fits in. Only meaningful when isBounded().
+    virtual Bounds3 bounds() const = 0;
+    // False for shapes that extend to infinity (planes), which stay outside the BVH.
+    virtual bool isBounded() const { return true; }
+
+    // Whether a material's emission leaves both sides of the surface (spheres and planes) or
     // only the side the geometric normal points to (triangles).
     virtual bool emitsOnBothSides() const { return true; }
 
-    const Material& material() const { return *material_; }
+    // Whether light can pass through some of the shape's surface (shadow rays must then look
+    // past the first surface they meet).
+    virtual bool hasTransmissiveMaterial() const;
+
+    const Material* material() const { return material_; }
 
 private:
     const Material* material_;

@@ -7,6 +7,10 @@ namespace lancer {
 Sphere::Sphere(const Vec3& center, float radius, const Material* material)
     : Shape(material), center_(center), radius_(radius) {}
 
+Bounds3 Sphere::bounds() const {
+    return {center_ - Vec3(radius_), center_ + Vec3(radius_)};
+}
+
 bool Sphere::intersect(const Ray& ray, float tMax, Hit& hit) const {
     // Solved in double precision: the roots, and so the side of the surface a spawned ray starts
     // on, are then exact to far below the float error bound used to offset spawned rays.
@@ -47,6 +51,7 @@ bool Sphere::intersect(const Ray& ray, float tMax, Hit& hit) const {
     if (phi < 0) phi += 2 * kPi;
     hit.uv = {phi / (2 * kPi), 0.5f + std::asin(clamp(n.y, -1.0f, 1.0f)) / kPi};
     hit.shape = this;
+    hit.material = material();
     return true;
 }
 

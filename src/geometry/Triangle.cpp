@@ -4,22 +4,19 @@
 
 namespace lancer {
 
-Triangle::Triangle(const std::array<Vec3, 3>& vertices, const Material* material,
-                   const std::optional<std::array<Vec3, 3>>& normals,
-                   const std::optional<std::array<Vec2, 3>>& uvs)
-    : Shape(material),
-      v_(vertices),
-      n_(normals),
-      uv_(uvs.value_or(std::array<Vec2, 3>{Vec2{0, 0}, Vec2{1, 0}, Vec2{0, 1}})) {
-    const Vec3 n = cross(v_[1] - v_[0], v_[2] - v_[0]);
-    geometricNormal_ = lengthSquared(n) > 0 ? normalize(n) : Vec3(0, 0, 0);
-}
-
-float Triangle::area() const {
-    return 0.5f * length(cross(v_[1] - v_[0], v_[2] - v_[0]));
-}
-
 namespace {
+
+std::shared_ptr<const TriangleMesh> makeSingleTriangleMesh(
+    const std::array<Vec3, 3>& vertices, const std::optional<std::array<Vec3, 3>>& normals,
+    const std::optional<std::array<Vec2, 3>>& uvs) {
+    auto mesh = std::make_shared<TriangleMesh>();
+    mesh->positions.assign(vertices.begin(), vertices.end());
+    if (normals) mesh->normals.assign(normals->begin(), normals->end());
+    if (uvs) mesh->uvs.assign(uvs->begin(), uvs->end());
+    mesh->indices = {0, 1, 2};
+    mesh->faceMaterials = {0};
+    return mesh;
+}
 
 // The 2D edge function a.x * b.y - a.y * b.x, recomputed in double when float rounds it to exactly
 // zero: that is what makes the test watertight on shared edges (Woop et al. 2013).
@@ -31,20 +28,53 @@ float edgeFunction(const Vec3& a, const Vec3& b) {
 
 }  // namespace
 
+Triangle::Triangle(std::shared_ptr<const TriangleMesh> mesh, std::uint32_t index,
+                   const Material* material)
+    : Shape(material), mesh_(std::move(mesh)), index_(index) {}
+
+Triangle::Triangle(const std::array<Vec3, 3>& vertices, const Material* material,
+                   const std::optional<std::array<Vec3, 3>>& normals,
+                   const std::optional<std::array<Vec2, 3>>& uvs)
+    : Triangle(makeSingleTriangleMesh(vertices, normals, uvs), 0, material) {}
+
+float Triangle::area() const {
+    const std::uint32_t* v = &mesh_->indices[3 * std::size_t{index_}];
+    const std::vector<Vec3>& p = mesh_->positions;
+    return 0.5f * length(cross(p[v[1]] - p[v[0]], p[v[2]] - p[v[0]]));
+}
+
+Bounds3 Triangle::bounds() const {
+    const std::uint32_t* v = &mesh_->indices[3 * std::size_t{index_}];
+    const std::vector<Vec3>& p = mesh_->positions;
+    return merge(Bounds3(p[v[0]], p[v[1]]), p[v[2]]);
+}
+
+bool Triangle::intersect(const Ray& ray, float tMax, Hit& hit) const {
+    const std::uint32_t* v = &mesh_->indices[3 * std::size_t{index_}];
+    const std::vector<Vec3>& p = mesh_->positions;
+    const auto at = intersect(p[v[0]], p[v[1]], p[v[2]], ray, tMax);
+    if (!at) return false;
+    fillHit(*mesh_, index_, *at, hit);
+    hit.shape = this;
+    if (material()) hit.material = material();
+    return true;
+}
+
 // Watertight ray/triangle intersection (Woop, Benthin and Wald 2013, in pbrt's formulation): the
 // triangle is moved into a frame where the ray starts at the origin and runs along +z, so that
 // the test reduces to the signs of three 2D edge functions, which agree exactly along a shared
 // edge. The t > 0 test is made conservative with a bound on the error of the computed t.
-bool Triangle::intersect(const Ray& ray, float tMax, Hit& hit) const {
+std::optional<TriangleIntersection> Triangle::intersect(const Vec3& v0, const Vec3& v1,
+                                                        const Vec3& v2, const Ray& ray,
+                                                        float tMax) {
     // Translate to the ray origin, permute so that the ray's largest component is z, then shear.
-    Vec3 p0 = v_[0] - ray.origin, p1 = v_[1] - ray.origin, p2 = v_[2] - ray.origin;
     const int kz = maxDimension(ray.direction);
     const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
     const Vec3 d = permute(ray.direction, kx, ky, kz);
-    if (d.z == 0) return false;
-    p0 = permute(p0, kx, ky, kz);
-    p1 = permute(p1, kx, ky, kz);
-    p2 = permute(p2, kx, ky, kz);
+    if (d.z == 0) return std::nullopt;
+    Vec3 p0 = permute(v0 - ray.origin, kx, ky, kz);
+    Vec3 p1 = permute(v1 - ray.origin, kx, ky, kz);
+    Vec3 p2 = permute(v2 - ray.origin, kx, ky, kz);
     const float shearX = -d.x / d.z, shearY = -d.y / d.z, shearZ = 1.0f / d.z;
     for (Vec3* p : {&p0, &p1, &p2}) {
         p->x += shearX * p->z;
@@ -54,49 +84,82 @@ bool Triangle::intersect(const Ray& ray, float tMax, Hit& hit) const {
     const float e0 = edgeFunction(p1, p2);
     const float e1 = edgeFunction(p2, p0);
     const float e2 = edgeFunction(p0, p1);
-    if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return false;
+    if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return std::nullopt;
     const float det = e0 + e1 + e2;
-    if (det == 0) return false;  // degenerate triangle, or a ray in its plane
+    if (det == 0) return std::nullopt;  // degenerate triangle, or a ray in its plane
+
+    // The rounding error of the sheared x and y grows with z in world units (the shear factors
+    // are at most 1), so its bound takes z before it is scaled to ray units below.
+    const float maxZWorld = maxComponent(abs(Vec3(p0.z, p1.z, p2.z)));
 
     // t, still scaled by det; compared against the range without dividing.
     p0.z *= shearZ;
     p1.z *= shearZ;
     p2.z *= shearZ;
     const float tScaled = e0 * p0.z + e1 * p1.z + e2 * p2.z;
-    if (det < 0 && (tScaled >= 0 || tScaled < tMax * det)) return false;
-    if (det > 0 && (tScaled <= 0 || tScaled > tMax * det)) return false;
+    if (det < 0 && (tScaled >= 0 || tScaled < tMax * det)) return std::nullopt;
+    if (det > 0 && (tScaled <= 0 || tScaled > tMax * det)) return std::nullopt;
 
     const float invDet = 1.0f / det;
-    const float b0 = e0 * invDet, b1 = e1 * invDet, b2 = e2 * invDet;
     const float t = tScaled * invDet;
-    if (!(t < tMax)) return false;
+    if (!(t < tMax)) return std::nullopt;
 
     // Reject t that is not certainly positive given the rounding errors above (pbrt 6.8.4).
     const float maxZ = maxComponent(abs(Vec3(p0.z, p1.z, p2.z)));
     const float maxX = maxComponent(abs(Vec3(p0.x, p1.x, p2.x)));
     const float maxY = maxComponent(abs(Vec3(p0.y, p1.y, p2.y)));
     const float deltaZ = gamma(3) * maxZ;
-    const float deltaX = gamma(5) * (maxX + maxZ);
-    const float deltaY = gamma(5) * (maxY + maxZ);
+    const float deltaX = gamma(5) * (maxX + maxZWorld);
+    const float deltaY = gamma(5) * (maxY + maxZWorld);
     const float deltaE = 2 * (gamma(2) * maxX * maxY + deltaY * maxX + deltaX * maxY);
     const float maxE = maxComponent(abs(Vec3(e0, e1, e2)));
     const float deltaT =
         3 * (gamma(3) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) * std::abs(invDet);
-    if (t <= deltaT) return false;
+    if (t <= deltaT) return std::nullopt;
 
-    hit.t = t;
-    hit.p = b0 * v_[0] + b1 * v_[1] + b2 * v_[2];
-    hit.pError = gamma(7) * (abs(b0 * v_[0]) + abs(b1 * v_[1]) + abs(b2 * v_[2]));
-    hit.ng = geometricNormal_;
-    hit.ns = geometricNormal_;
-    if (n_) {
-        const Vec3 ns = b0 * (*n_)[0] + b1 * (*n_)[1] + b2 * (*n_)[2];
-        if (lengthSquared(ns) > 0)
-            hit.ns = dot(ns, geometricNormal_) < 0 ? -normalize(ns) : normalize(ns);
+    return TriangleIntersection{e0 * invDet, e1 * invDet, e2 * invDet, t};
+}
+
+void Triangle::fillHit(const TriangleMesh& mesh, std::uint32_t index,
+                       const TriangleIntersection& at, Hit& hit) {
+    const std::uint32_t* v = &mesh.indices[3 * std::size_t{index}];
+    const Vec3& p0 = mesh.positions[v[0]];
+    const Vec3& p1 = mesh.positions[v[1]];
+    const Vec3& p2 = mesh.positions[v[2]];
+    const float b0 = at.b0, b1 = at.b1, b2 = at.b2;
+
+    hit.t = at.t;
+    hit.p = b0 * p0 + b1 * p1 + b2 * p2;
+    hit.pError = gamma(7) * (abs(b0 * p0) + abs(b1 * p1) + abs(b2 * p2));
+    hit.ng = normalize(cross(p1 - p0, p2 - p0));
+    hit.ns = hit.ng;
+    if (!mesh.normals.empty()) {
+        const Vec3 ns = b0 * mesh.normals[v[0]] + b1 * mesh.normals[v[1]] + b2 * mesh.normals[v[2]];
+        // A vertex without a normal (zero) makes the interpolation meaningless: keep the flat
+        // normal.
+        const bool complete = lengthSquared(mesh.normals[v[0]]) > 0 &&
+                              lengthSquared(mesh.normals[v[1]]) > 0 &&
+                              lengthSquared(mesh.normals[v[2]]) > 0;
+        if (complete && lengthSquared(ns) > 0)
+            hit.ns = dot(ns, hit.ng) < 0 ? -normalize(ns) : normalize(ns);
     }
-    hit.uv = b0 * uv_[0] + b1 * uv_[1] + b2 * uv_[2];
-    hit.shape = this;
-    return true;
+
+    const Vec2 uv0 = mesh.uvs.empty() ? Vec2(0, 0) : mesh.uvs[v[0]];
+    const Vec2 uv1 = mesh.uvs.empty() ? Vec2(1, 0) : mesh.uvs[v[1]];
+    const Vec2 uv2 = mesh.uvs.empty() ? Vec2(0, 1) : mesh.uvs[v[2]];
+    hit.uv = b0 * uv0 + b1 * uv1 + b2 * uv2;
+    // dp/du and dp/dv: solve p0 - p2 = du02 dpdu + dv02 dpdv, p1 - p2 = du12 dpdu + dv12 dpdv.
+    const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
+    const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+    const float uvDet = duv02.x * duv12.y - duv02.y * duv12.x;
+    if (std::abs(uvDet) > 1e-12f) {
+        const float inv = 1 / uvDet;
+        hit.dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
+        hit.dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
+    } else {
+        coordinateSystem(hit.ng, hit.dpdu, hit.dpdv);  // uvs do not span the triangle
+    }
+    if (!mesh.materials.empty()) hit.material = mesh.materials[mesh.faceMaterials[index]].get();
 }
 
 }  // namespace lancer

@@ -1,32 +1,51 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
+#include <memory>
 #include <optional>
 
 #include "geometry/Shape.h"
+#include "geometry/TriangleMesh.h"
 
 namespace lancer {
 
-// A triangle v0 v1 v2. Its front side, the one (v1 - v0) x (v2 - v0) points to, is the side it
-// emits light on. Optional per-vertex normals give smooth shading, optional uvs texture
-// coordinates (by default (0,0), (1,0), (0,1)).
+// Where a ray meets a triangle: barycentric coordinates of vertices 0, 1, 2 and the ray's t.
+struct TriangleIntersection {
+    float b0, b1, b2;
+    float t;
+};
+
+// Triangle `index` of a TriangleMesh. Its front side, the one (v1 - v0) x (v2 - v0) points to, is
+// the side it emits light on. Vertex normals, where the mesh has them, give smooth shading; uvs
+// default to (0,0), (1,0), (0,1). The static functions are the triangle code that meshes share.
 class Triangle final : public Shape {
 public:
+    Triangle(std::shared_ptr<const TriangleMesh> mesh, std::uint32_t index,
+             const Material* material);
+    // A standalone triangle (the scene file's), owning a mesh of one triangle.
     Triangle(const std::array<Vec3, 3>& vertices, const Material* material,
              const std::optional<std::array<Vec3, 3>>& normals = std::nullopt,
              const std::optional<std::array<Vec2, 3>>& uvs = std::nullopt);
 
     bool intersect(const Ray& ray, float tMax, Hit& hit) const override;
+    Bounds3 bounds() const override;
     bool emitsOnBothSides() const override { return false; }
 
-    // Twice the area is |(v1 - v0) x (v2 - v0)|; a triangle with zero area can never be hit.
     float area() const;
 
+    // Watertight ray/triangle intersection with 0 < t < tMax.
+    static std::optional<TriangleIntersection> intersect(const Vec3& p0, const Vec3& p1,
+                                                         const Vec3& p2, const Ray& ray,
+                                                         float tMax);
+    // Fills hit's geometry (t, p, pError, normals, dpdu, dpdv, uv) for triangle `index` of `mesh`,
+    // and its material when the mesh has materials.
+    static void fillHit(const TriangleMesh& mesh, std::uint32_t index,
+                        const TriangleIntersection& at, Hit& hit);
+
 private:
-    std::array<Vec3, 3> v_;
-    std::optional<std::array<Vec3, 3>> n_;
-    std::array<Vec2, 3> uv_;
-    Vec3 geometricNormal_;
+    std::shared_ptr<const TriangleMesh> mesh_;
+    std::uint32_t index_;
 };
 
 }  // namespace lancer

@@ -14,7 +14,8 @@ struct Bounds3 {
     Vec3 max{-kInfinity, -kInfinity, -kInfinity};
 
     constexpr Bounds3() = default;
-    constexpr Bounds3(const Vec3& a, const Vec3& b) : min(lancer::min(a, b)), max(lancer::max(a, b)) {}
+    constexpr Bounds3(const Vec3& a, const Vec3& b)
+        : min(lancer::min(a, b)), max(lancer::max(a, b)) {}
     constexpr explicit Bounds3(const Vec3& p) : min(p), max(p) {}
 
     constexpr bool isEmpty() const { return min.x > max.x || min.y > max.y || min.z > max.z; }
@@ -33,7 +34,8 @@ struct Bounds3 {
         return o;
     }
     constexpr bool contains(const Vec3& p) const {
-        return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y && p.z >= min.z && p.z <= max.z;
+        return p.x >= min.x && p.x <= max.x && p.y >= min.y && p.y <= max.y && p.z >= min.z &&
+               p.z <= max.z;
     }
     constexpr int maxExtentAxis() const { return maxDimension(diagonal()); }
 

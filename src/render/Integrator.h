@@ -17,8 +17,11 @@ class Integrator {
 public:
     virtual ~Integrator() = default;
 
-    // rayCount is incremented for every ray the integrator traces (the camera ray included).
-    virtual Color radiance(const Ray& ray, Sampler& sampler, std::uint64_t& rayCount) const = 0;
+    // The radiance arriving along a camera ray of unit direction. pixelSpread is the angle that a
+    // sample's share of the pixel spans, for texture filtering. rayCount is incremented for every
+    // ray traced (the camera ray included).
+    virtual Color radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
+                           std::uint64_t& rayCount) const = 0;
 
     // The integrator the scene's settings name ("whitted", ...), rendering that scene.
     static std::unique_ptr<Integrator> create(const Scene& scene);

@@ -1,6 +1,7 @@
 #include "render/Renderer.h"
 
 #include <chrono>
+#include <cmath>
 #include <mutex>
 #include <thread>
 #include <vector>
@@ -18,6 +19,10 @@ Color Renderer::renderPixel(int x, int y, std::uint64_t seed, std::uint64_t& ray
     const RenderSettings& settings = scene_.settings();
     const int spp = settings.samplesPerPixel;
     Sampler sampler(seed, x, y, spp);
+    // Each of n samples covers about 1/sqrt(n) of the pixel's width; the floor keeps some
+    // texture filtering at very high sample counts (as pbrt does).
+    const float pixelSpread = scene_.camera().pixelSpreadAngle(settings.height) *
+                              std::max(0.125f, 1 / std::sqrt(static_cast<float>(spp)));
     Color sum;
     for (int s = 0; s < spp; ++s) {
         sampler.startSample(s);
@@ -28,7 +33,7 @@ Color Renderer::renderPixel(int x, int y, std::uint64_t seed, std::uint64_t& ray
         const Ray ray = scene_.camera().generateRay(static_cast<float>(x) + offset.x,
                                                     static_cast<float>(y) + offset.y,
                                                     settings.width, settings.height, lens);
-        sum += integrator_.radiance(ray, sampler, rayCount);
+        sum += integrator_.radiance(ray, pixelSpread, sampler, rayCount);
     }
     return sum / static_cast<float>(spp);
 }

@@ -12,17 +12,39 @@ namespace lancer {
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth)
     : scene_(scene), maxDepth_(maxDepth) {}
 
-Color WhittedIntegrator::radiance(const Ray& ray, Sampler& sampler, std::uint64_t& rayCount) const {
-    return trace(ray, 0, sampler, rayCount);
+Color WhittedIntegrator::radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
+                                  std::uint64_t& rayCount) const {
+    return trace({ray, 0, pixelSpread}, 0, sampler, rayCount);
 }
 
-Color WhittedIntegrator::trace(const Ray& ray, int depth, Sampler& sampler,
+namespace {
+
+// The pixel's footprint on the surface: a disc of the given width across the ray, projected
+// along the ray onto the tangent plane (ray-cone texture filtering, ignoring curvature).
+void setFootprint(Hit& hit, const Vec3& direction, float width) {
+    const float cosTheta = dot(hit.ng, direction);
+    if (cosTheta == 0) return;
+    Vec3 a, b;
+    coordinateSystem(direction, a, b);
+    const auto ontoSurface = [&](const Vec3& v) {
+        return width * (v - direction * (dot(hit.ng, v) / cosTheta));
+    };
+    hit.setUvFootprint(ontoSurface(a), ontoSurface(b));
+}
+
+}  // namespace
+
+Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
                                std::uint64_t& rayCount) const {
+    const Ray& ray = path.ray;
     ++rayCount;
     Hit hit;
     if (!scene_.intersect(ray, kInfinity, hit)) return scene_.background();
+    // Directions are unit vectors, so t is a distance.
+    const float distance = path.distance + hit.t;
+    setFootprint(hit, ray.direction, distance * path.spread);
 
-    const Material& material = hit.shape->material();
+    const Material& material = *hit.material;
     const Vec3 wo = -normalize(ray.direction);
     const bool front = hit.frontFace(ray);
     // Shade the side the ray arrived on.
@@ -47,15 +69,17 @@ Color WhittedIntegrator::trace(const Ray& ray, int depth, Sampler& sampler,
         if (!refractionWeight.isBlack()) refracted = refract(wo, n, eta);
     }
     if (!reflectionWeight.isBlack())
-        L += reflectionWeight * trace(hit.spawnRay(reflect(wo, n)), depth + 1, sampler, rayCount);
+        L += reflectionWeight * trace({hit.spawnRay(reflect(wo, n)), distance, path.spread},
+                                      depth + 1, sampler, rayCount);
     if (refracted)
-        L += refractionWeight * trace(hit.spawnRay(*refracted), depth + 1, sampler, rayCount);
+        L += refractionWeight * trace({hit.spawnRay(normalize(*refracted)), distance, path.spread},
+                                      depth + 1, sampler, rayCount);
     return L;
 }
 
 Color WhittedIntegrator::directLighting(const Hit& hit, const Vec3& n, const Vec3& wo,
                                         Sampler& sampler, std::uint64_t& rayCount) const {
-    const Material& material = hit.shape->material();
+    const Material& material = *hit.material;
     const Color kd = material.diffuse->evaluate(hit);
     Color L;
     for (const auto& light : scene_.lights()) {

@@ -14,10 +14,19 @@ class WhittedIntegrator final : public Integrator {
 public:
     WhittedIntegrator(const Scene& scene, int maxDepth);
 
-    Color radiance(const Ray& ray, Sampler& sampler, std::uint64_t& rayCount) const override;
+    Color radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
+                   std::uint64_t& rayCount) const override;
 
 private:
-    Color trace(const Ray& ray, int depth, Sampler& sampler, std::uint64_t& rayCount) const;
+    // A ray of the path from the camera, with what texture filtering needs to know of the path:
+    // the distance travelled before this ray and the angle the pixel's footprint spreads over.
+    struct PathRay {
+        Ray ray;
+        float distance;
+        float spread;
+    };
+
+    Color trace(const PathRay& path, int depth, Sampler& sampler, std::uint64_t& rayCount) const;
     Color directLighting(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,
                          std::uint64_t& rayCount) const;
 

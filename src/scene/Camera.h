@@ -17,6 +17,12 @@ public:
     // top-left corner, y downwards. lensSample in [0,1)^2 picks the point on the lens.
     Ray generateRay(float px, float py, int width, int height, const Vec2& lensSample) const;
 
+    // The angle between the rays through neighbouring pixel centres, near the image centre: how
+    // fast a pixel's footprint grows with distance, for texture filtering.
+    float pixelSpreadAngle(int height) const {
+        return 2 * tanHalfVfov_ / static_cast<float>(height);
+    }
+
 private:
     Vec3 position_;
     Vec3 u_, v_, w_;  // right, up, and backwards (w points from the scene towards the camera)

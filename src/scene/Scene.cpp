@@ -8,7 +8,21 @@ const Material* Scene::addMaterial(std::unique_ptr<Material> material) {
 }
 
 void Scene::addShape(std::unique_ptr<Shape> shape) {
-    shapes_.push_back(std::move(shape));
+    hasTransmissiveMaterial_ |= shape->hasTransmissiveMaterial();
+    (shape->isBounded() ? boundedShapes_ : unboundedShapes_).push_back(std::move(shape));
+}
+
+void Scene::buildAccelerationStructure() {
+    std::vector<Bounds3> bounds;
+    bounds.reserve(boundedShapes_.size());
+    for (const auto& shape : boundedShapes_)
+        bounds.push_back(shape->bounds());
+    bvh_ = Bvh(bounds);
+    std::vector<std::unique_ptr<Shape>> ordered;
+    ordered.reserve(boundedShapes_.size());
+    for (std::uint32_t index : bvh_.primitiveOrder())
+        ordered.push_back(std::move(boundedShapes_[index]));
+    boundedShapes_ = std::move(ordered);
 }
 
 void Scene::addLight(std::unique_ptr<Light> light) {
@@ -16,8 +30,12 @@ void Scene::addLight(std::unique_ptr<Light> light) {
 }
 
 bool Scene::intersect(const Ray& ray, float tMax, Hit& hit) const {
-    bool found = false;
-    for (const auto& shape : shapes_) {
+    bool found = bvh_.intersect(ray, tMax, [&](std::uint32_t k, const Ray& r, float& tFar) {
+        if (!boundedShapes_[k]->intersect(r, tFar, hit)) return false;
+        tFar = hit.t;
+        return true;
+    });
+    for (const auto& shape : unboundedShapes_) {
         if (shape->intersect(ray, tMax, hit)) {
             tMax = hit.t;
             found = true;
@@ -26,8 +44,24 @@ bool Scene::intersect(const Ray& ray, float tMax, Hit& hit) const {
     return found;
 }
 
+bool Scene::occluded(const Ray& ray, float tMax) const {
+    for (const auto& shape : unboundedShapes_)
+        if (shape->occluded(ray, tMax)) return true;
+    return bvh_.occluded(ray, tMax, [&](std::uint32_t k, const Ray& r, float tFar) {
+        return boundedShapes_[k]->occluded(r, tFar);
+    });
+}
+
 Color Scene::transmittance(const Hit& from, const LightSample& light,
                            std::uint64_t& rayCount) const {
+    if (!hasTransmissiveMaterial_) {
+        // Everything is opaque: the first blocker decides, and any blocker will do.
+        const Ray ray =
+            light.atInfinity ? from.spawnRay(light.wi) : from.spawnRayTo(light.position);
+        ++rayCount;
+        return occluded(ray, light.atInfinity ? kInfinity : 1 - kShadowEpsilon) ? Color(0)
+                                                                                : Color(1);
+    }
     Color visibility(1);
     Hit surface = from;
     // Each crossing starts beyond the surface just crossed, so the walk always moves towards
@@ -39,7 +73,7 @@ Color Scene::transmittance(const Hit& from, const LightSample& light,
         ++rayCount;
         Hit blocker;
         if (!intersect(ray, tMax, blocker)) return visibility;
-        visibility *= blocker.shape->material().transmission;
+        visibility *= blocker.material->transmission;
         if (visibility.isBlack()) return visibility;
         surface = blocker;
     }

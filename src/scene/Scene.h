@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "accel/Bvh.h"
 #include "geometry/Shape.h"
 #include "lights/Light.h"
 #include "materials/Material.h"
@@ -16,6 +17,14 @@ namespace lancer {
 // shapes point to their materials, so a Scene is moved, never copied.
 class Scene {
 public:
+    // What the scene holds, for --stats.
+    struct Statistics {
+        std::size_t uniqueTriangles = 0;     // stored: each model counted once
+        std::size_t instancedTriangles = 0;  // drawn: each model counted once per instance
+        std::size_t meshBytes = 0;           // the models' vertex, index and BVH arrays
+        double loadSeconds = 0;              // reading files and building BVHs
+    };
+
     Scene() = default;
     Scene(Scene&&) = default;
     Scene& operator=(Scene&&) = default;
@@ -34,11 +43,21 @@ public:
     const Material* addMaterial(std::unique_ptr<Material> material);
     void addShape(std::unique_ptr<Shape> shape);
     void addLight(std::unique_ptr<Light> light);
+    // Builds the BVH over the bounded shapes; call once all shapes are added, before rendering.
+    void buildAccelerationStructure();
 
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
 
+    Statistics& statistics() { return statistics_; }
+    const Statistics& statistics() const { return statistics_; }
+    std::size_t boundedShapeCount() const { return boundedShapes_.size(); }
+    std::size_t unboundedShapeCount() const { return unboundedShapes_.size(); }
+    std::size_t accelerationStructureBytes() const { return bvh_.memoryBytes(); }
+
     // The nearest hit with 0 < t < tMax, if any.
     bool intersect(const Ray& ray, float tMax, Hit& hit) const;
+    // Whether anything is hit with 0 < t < tMax.
+    bool occluded(const Ray& ray, float tMax) const;
 
     // The visibility V_l of a light sample from a surface point: the product of the transmission
     // of every surface the shadow ray crosses on its way (0 behind anything opaque).
@@ -50,7 +69,11 @@ private:
     Color background_{0};
     Color ambient_{0};
     std::vector<std::unique_ptr<Material>> materials_;
-    std::vector<std::unique_ptr<Shape>> shapes_;
+    std::vector<std::unique_ptr<Shape>> boundedShapes_;  // in the BVH's leaf order once built
+    std::vector<std::unique_ptr<Shape>> unboundedShapes_;
+    Bvh bvh_;
+    bool hasTransmissiveMaterial_ = false;
+    Statistics statistics_;
     std::vector<std::unique_ptr<Light>> lights_;
 };
 

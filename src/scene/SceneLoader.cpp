@@ -1,16 +1,21 @@
 #include "scene/SceneLoader.h"
 
+#include <chrono>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
+#include "geometry/Instance.h"
+#include "geometry/Mesh.h"
 #include "geometry/Plane.h"
 #include "geometry/Sphere.h"
 #include "geometry/Triangle.h"
+#include "io/ObjLoader.h"
 #include "lights/DirectionalLight.h"
 #include "lights/PointLight.h"
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
+#include "materials/ImageTexture.h"
 #include "scene/DidYouMean.h"
 
 namespace lancer {
@@ -58,13 +63,15 @@ Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::
 Scene SceneLoader::loadString(const std::string& text, const std::string& fileName,
                               std::vector<std::string>& warnings) {
     const JsonDocument doc = JsonDocument::parse(text, fileName);
-    return SceneLoader(doc, warnings).load();
+    return SceneLoader(doc, std::filesystem::path(fileName).parent_path(), warnings).load();
 }
 
-SceneLoader::SceneLoader(const JsonDocument& doc, std::vector<std::string>& warnings)
-    : doc_(doc), warnings_(warnings) {}
+SceneLoader::SceneLoader(const JsonDocument& doc, std::filesystem::path baseDir,
+                         std::vector<std::string>& warnings)
+    : doc_(doc), baseDir_(std::move(baseDir)), warnings_(warnings) {}
 
 Scene SceneLoader::load() {
+    const auto start = std::chrono::steady_clock::now();
     const Node root{doc_.root(), "", "the scene"};
     requireObject(root, "the scene");
     checkKeys(root, "the scene",
@@ -89,6 +96,9 @@ Scene SceneLoader::load() {
         for (std::size_t i = 0; i < lights.value.size(); ++i)
             loadLight(lights.at(i));
     }
+    scene_.buildAccelerationStructure();
+    scene_.statistics().loadSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return std::move(scene_);
 }
 
@@ -117,7 +127,7 @@ void SceneLoader::loadCamera(const Node& node) {
               {"position", "look_at", "up", "vfov", "aperture", "focus_distance"});
     const Vec3 position = readVec3(require(node, "position", "the camera"));
     const Vec3 lookAt = readVec3(require(node, "look_at", "the camera"));
-    if (position == lookAt) fail(node["look_at"], "the camera looks at its own position");
+    if (position == lookAt) fail(node["look_at"], "\"look_at\" is the camera's own \"position\"");
     const Vec3 up = node.has("up") ? readDirection(node["up"]) : Vec3(0, 1, 0);
     if (lengthSquared(cross(normalize(up), normalize(position - lookAt))) < 1e-12f)
         fail(node.has("up") ? node["up"] : node,
@@ -141,7 +151,7 @@ void SceneLoader::loadMaterials(const Node& node) {
 }
 
 std::unique_ptr<Material> SceneLoader::loadMaterial(const Node& node) {
-    requireObject(node, "a material");
+    requireObject(node, "material " + node.name);
     checkKeys(node, "a material",
               {"diffuse", "ambient", "specular", "shininess", "reflection", "transmission", "ior",
                "emission"});
@@ -162,8 +172,15 @@ std::shared_ptr<const Texture> SceneLoader::loadTexture(const Node& node) {
     checkKeys(node, "a texture", {"checker", "texture"});
     if (node.value.size() != 1)
         fail(node, "a texture is either {\"checker\": ...} or {\"texture\": FILE}");
-    if (node.has("texture"))
-        fail(node["texture"], "image textures are not supported yet (use a colour or a checker)");
+    if (node.has("texture")) {
+        const Node file = node["texture"];
+        const std::filesystem::path path = baseDir_ / readString(file);
+        try {
+            return loadImageTexture(path);
+        } catch (const InputError& e) {
+            fail(file, "texture " + inQuotes(path.string()) + ": " + e.message());
+        }
+    }
     const Node checker = node["checker"];
     requireObject(checker, "\"checker\"");
     checkKeys(checker, "\"checker\"", {"even", "odd", "scale"});
@@ -188,18 +205,23 @@ const Material* SceneLoader::materialOf(const Node& object) {
 void SceneLoader::loadObject(const Node& node) {
     requireObject(node, "an object");
     const std::string type = readString(require(node, "type", "an object"));
+    const auto transform = [&]() -> std::optional<Transform> {
+        if (!node.has("transform")) return std::nullopt;
+        return readTransform(node["transform"]);
+    };
     if (type == "sphere") {
-        checkKeys(node, "a sphere", {"type", "center", "radius", "material"});
+        checkKeys(node, "a sphere", {"type", "center", "radius", "material", "transform"});
         const Vec3 center = readVec3(require(node, "center", "a sphere"));
         const float radius = readNumberAtLeast(require(node, "radius", "a sphere"), 0, false);
-        scene_.addShape(std::make_unique<Sphere>(center, radius, materialOf(node)));
+        addShape(std::make_unique<Sphere>(center, radius, materialOf(node)), transform());
     } else if (type == "plane") {
-        checkKeys(node, "a plane", {"type", "point", "normal", "material"});
+        checkKeys(node, "a plane", {"type", "point", "normal", "material", "transform"});
         const Vec3 point = readVec3(require(node, "point", "a plane"));
         const Vec3 normal = readDirection(require(node, "normal", "a plane"));
-        scene_.addShape(std::make_unique<Plane>(point, normal, materialOf(node)));
+        addShape(std::make_unique<Plane>(point, normal, materialOf(node)), transform());
     } else if (type == "triangle") {
-        checkKeys(node, "a triangle", {"type", "vertices", "normals", "uvs", "material"});
+        checkKeys(node, "a triangle",
+                  {"type", "vertices", "normals", "uvs", "material", "transform"});
         const auto readThree = [&](const std::string& key, auto read) {
             const Node list = require(node, key, "a triangle");
             if (!list.value.is_array() || list.value.size() != 3)
@@ -217,16 +239,119 @@ void SceneLoader::loadObject(const Node& node) {
             normals = readThree("normals", [&](const Node& n) { return readDirection(n); });
         if (node.has("uvs")) uvs = readThree("uvs", [&](const Node& n) { return readVec2(n); });
         auto triangle = std::make_unique<Triangle>(vertices, materialOf(node), normals, uvs);
-        if (triangle->area() > 0)
-            scene_.addShape(std::move(triangle));
-        else
+        if (triangle->area() > 0) {
+            ++scene_.statistics().uniqueTriangles;
+            ++scene_.statistics().instancedTriangles;
+            addShape(std::move(triangle), transform());
+        } else
             warn(node["vertices"], "triangle has zero area and is left out");
     } else if (type == "mesh") {
-        fail(node["type"], "\"mesh\" objects are not supported yet");
+        checkKeys(node, "a mesh", {"type", "file", "material", "transform"});
+        std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", "a mesh"));
+        scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
+        // Without "material", the model's own materials (from its .mtl) are used.
+        const Material* material = node.has("material") ? materialOf(node) : nullptr;
+        scene_.addShape(std::make_unique<Instance>(std::move(mesh),
+                                                   transform().value_or(Transform()), material));
     } else {
         fail(node["type"], "unknown object type " + inQuotes(type) +
                                didYouMean(type, {"sphere", "plane", "triangle", "mesh"}));
     }
+}
+
+void SceneLoader::addShape(std::unique_ptr<Shape> shape,
+                           const std::optional<Transform>& transform) {
+    if (transform)
+        scene_.addShape(std::make_unique<Instance>(std::move(shape), *transform));
+    else
+        scene_.addShape(std::move(shape));
+}
+
+std::shared_ptr<const Mesh> SceneLoader::loadMesh(const Node& file) {
+    const std::filesystem::path path = baseDir_ / readString(file);
+    const std::string key = std::filesystem::weakly_canonical(path).string();
+    if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
+    try {
+        const auto loadTexture = [this](const std::filesystem::path& p) {
+            return loadImageTexture(p);
+        };
+        std::shared_ptr<TriangleMesh> triangles = ObjLoader::load(path, loadTexture, warnings_);
+        auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
+        meshes_[key] = mesh;
+        scene_.statistics().uniqueTriangles += mesh->triangles().triangleCount();
+        scene_.statistics().meshBytes += mesh->memoryBytes();
+        return mesh;
+    } catch (const InputError& e) {
+        fail(file, "mesh " + inQuotes(path.string()) + ": " + e.message());
+    }
+}
+
+std::shared_ptr<const Texture> SceneLoader::loadImageTexture(const std::filesystem::path& path) {
+    const std::string key = std::filesystem::weakly_canonical(path).string();
+    if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
+    std::shared_ptr<const Texture> texture = ImageTexture::load(path);
+    textures_[key] = texture;
+    return texture;
+}
+
+Transform SceneLoader::readTransform(const Node& node) const {
+    requireObject(node, "\"transform\"");
+    checkKeys(node, "a transform", {"scale", "rotate", "translate", "matrix"});
+    if (node.has("matrix")) {
+        const Node matrix = node["matrix"];
+        if (node.value.size() > 1)
+            fail(matrix,
+                 "\"matrix\" replaces \"scale\", \"rotate\" and \"translate\": give one or the "
+                 "others");
+        // Row-major, as 4 rows of 4 numbers or as 16 numbers.
+        std::vector<float> numbers;
+        const auto collect = [&](const Node& list) {
+            for (std::size_t i = 0; i < list.value.size(); ++i)
+                numbers.push_back(readNumber(list.at(i)));
+        };
+        const bool nested =
+            matrix.value.is_array() && matrix.value.size() == 4 &&
+            std::all_of(matrix.value.begin(), matrix.value.end(),
+                        [](const json& row) { return row.is_array() && row.size() == 4; });
+        if (nested) {
+            for (std::size_t row = 0; row < 4; ++row)
+                collect(matrix.at(row));
+        } else if (matrix.value.is_array() && matrix.value.size() == 16) {
+            collect(matrix);
+        } else {
+            fail(matrix, "\"matrix\" must be 4 rows of 4 numbers (row-major), got " +
+                             describe(matrix.value));
+        }
+        Transform::Matrix m;
+        for (std::size_t i = 0; i < 16; ++i)
+            m[i / 4][i % 4] = numbers[i];
+        try {
+            return Transform(m);
+        } catch (const std::invalid_argument& e) {
+            fail(matrix, std::string("\"matrix\": ") + e.what());
+        }
+    }
+    // scale, then rotate, then translate.
+    Transform result;
+    if (node.has("scale")) {
+        const Node scale = node["scale"];
+        const Vec3 factors = scale.value.is_number() ? Vec3(readNumber(scale)) : readVec3(scale);
+        if (factors.x == 0 || factors.y == 0 || factors.z == 0)
+            fail(scale, "\"scale\" factors must not be 0");
+        result = Transform::scale(factors);
+    }
+    if (node.has("rotate")) {
+        const Node rotate = node["rotate"];
+        if (!rotate.value.is_array() || rotate.value.size() != 4)
+            fail(rotate, "\"rotate\" must be [axis x, axis y, axis z, degrees], got " +
+                             describe(rotate.value));
+        const Vec3 axis(readNumber(rotate.at(0)), readNumber(rotate.at(1)),
+                        readNumber(rotate.at(2)));
+        if (!(lengthSquared(axis) > 0)) fail(rotate, "the \"rotate\" axis must not be zero");
+        result = Transform::rotate(readNumber(rotate.at(3)), axis) * result;
+    }
+    if (node.has("translate")) result = Transform::translate(readVec3(node["translate"])) * result;
+    return result;
 }
 
 void SceneLoader::loadLight(const Node& node) {

@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "geometry/Mesh.h"
 #include "io/JsonDocument.h"
+#include "math/Transform.h"
 #include "scene/Scene.h"
 
 namespace lancer {
@@ -35,7 +37,8 @@ private:
         bool has(const std::string& key) const { return value.contains(key); }
     };
 
-    SceneLoader(const JsonDocument& doc, std::vector<std::string>& warnings);
+    SceneLoader(const JsonDocument& doc, std::filesystem::path baseDir,
+                std::vector<std::string>& warnings);
     Scene load();
 
     void loadRender(const Node& node);
@@ -44,6 +47,10 @@ private:
     std::unique_ptr<Material> loadMaterial(const Node& node);
     std::shared_ptr<const Texture> loadTexture(const Node& node);
     void loadObject(const Node& node);
+    void addShape(std::unique_ptr<Shape> shape, const std::optional<Transform>& transform);
+    std::shared_ptr<const Mesh> loadMesh(const Node& file);
+    std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
+    Transform readTransform(const Node& node) const;
     void loadLight(const Node& node);
     const Material* materialOf(const Node& object);
 
@@ -66,10 +73,14 @@ private:
     Color readColor(const Node& node) const;
 
     const JsonDocument& doc_;
+    std::filesystem::path baseDir_;  // relative paths in the scene start here
     std::vector<std::string>& warnings_;
     Scene scene_;
     std::map<std::string, const Material*> materials_;
     const Material* defaultMaterial_ = nullptr;
+    // Each model and texture file is loaded once, however many objects use it.
+    std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
+    std::map<std::string, std::shared_ptr<const Texture>> textures_;
 };
 
 }  // namespace lancer
