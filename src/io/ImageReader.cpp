@@ -4,11 +4,15 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
+#include <exception>
 #include <memory>
 #include <string>
 #include <system_error>
 
+#include "io/FreeImageSupport.h"
 #include "io/InputError.h"
 #include "math/Srgb.h"
 
@@ -16,31 +20,137 @@ namespace lancer {
 
 namespace {
 
-// FreeImage reports failures through a global callback; keep the last message for ours.
-thread_local std::string lastFreeImageMessage;
-void recordFreeImageMessage(FREE_IMAGE_FORMAT, const char* message) {
-    lastFreeImageMessage = message ? message : "";
-}
-
-struct BitmapDeleter {
-    void operator()(FIBITMAP* b) const { FreeImage_Unload(b); }
+struct FileCloser {
+    void operator()(std::FILE* f) const { std::fclose(f); }
 };
-using Bitmap = std::unique_ptr<FIBITMAP, BitmapDeleter>;
+using File = std::unique_ptr<std::FILE, FileCloser>;
 
-// Why the file cannot be opened for reading, or "" when it can: FreeImage itself only says that
-// it failed.
-std::string openError(const std::filesystem::path& path) {
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored)) return "a folder, not an image file";
-    std::FILE* file = std::fopen(path.string().c_str(), "rb");
-    if (!file) return std::generic_category().message(errno);
-    std::fclose(file);
-    return "";
+// FreeImage reads through these. Reading past the end of the file yields zeros rather than
+// leaving the buffer as it was: FreeImage's OpenEXR stream ignores short reads, and OpenEXR,
+// rereading stale bytes where it expects the null that ends a list (of attributes, of channels),
+// would loop forever; zeros end the list, and OpenEXR reports the damage.
+unsigned readZeroFilled(void* buffer, unsigned size, unsigned count, fi_handle handle) {
+    const std::size_t read = std::fread(buffer, size, count, static_cast<std::FILE*>(handle));
+    std::memset(static_cast<char*>(buffer) + read * size, 0, (count - read) * size);
+    return static_cast<unsigned>(read);
+}
+unsigned writeNothing(void*, unsigned, unsigned, fi_handle) {
+    return 0;
+}
+int seek(fi_handle handle, long offset, int origin) {
+    return std::fseek(static_cast<std::FILE*>(handle), offset, origin);
+}
+long tell(fi_handle handle) {
+    return std::ftell(static_cast<std::FILE*>(handle));
+}
+FreeImageIO fileIO{readZeroFilled, writeNothing, seek, tell};
+
+// From the file's signature, or failing that (TGA has none) from its extension.
+FREE_IMAGE_FORMAT formatOf(std::FILE* file, const std::string& name) {
+    const FREE_IMAGE_FORMAT fromContents = FreeImage_GetFileTypeFromHandle(&fileIO, file, 0);
+    return fromContents != FIF_UNKNOWN ? fromContents : FreeImage_GetFIFFromFilename(name.c_str());
 }
 
-FREE_IMAGE_FORMAT formatOf(const std::string& file) {
-    const FREE_IMAGE_FORMAT fromContents = FreeImage_GetFileType(file.c_str(), 0);
-    return fromContents != FIF_UNKNOWN ? fromContents : FreeImage_GetFIFFromFilename(file.c_str());
+// ---- Damage that FreeImage 3.18's decoders do not survive, found before they see the file.
+
+std::uint32_t littleEndian(const unsigned char* bytes, int count) {
+    std::uint32_t value = 0;
+    for (int i = count - 1; i >= 0; --i)
+        value = value << 8 | bytes[i];
+    return value;
+}
+
+// The `count` (at most 4) bytes at `offset` as a little-endian integer, as FreeImage's decoders
+// see them: zeros past the end of the file.
+std::uint32_t readLittleEndian(std::FILE* file, long offset, int count) {
+    unsigned char bytes[4] = {};
+    const bool inFile = std::fseek(file, offset, SEEK_SET) == 0 &&
+                        std::fread(bytes, 1, static_cast<std::size_t>(count), file) > 0;
+    return inFile ? littleEndian(bytes, count) : 0;
+}
+
+long fileSize(std::FILE* file) {
+    std::fseek(file, 0, SEEK_END);
+    return std::ftell(file);
+}
+
+// Skips a null-terminated name of at most 255 characters (OpenEXR's longest); false when the
+// file ends first or the name is longer. `empty` tells whether it was "".
+bool skipExrName(std::FILE* file, bool& empty) {
+    for (int length = 0; length <= 255; ++length) {
+        const int c = std::fgetc(file);
+        if (c == EOF) return false;
+        if (c == 0) {
+            empty = length == 0;
+            return true;
+        }
+    }
+    return false;
+}
+
+// OpenEXR trusts the sizes in a file's header: a damaged one makes it allocate gigabytes. Checks
+// that every attribute of every header (one, or a list of them in a multi-part file) lies within
+// the file.
+bool exrHeadersFitInFile(std::FILE* file) {
+    const long size = fileSize(file);
+    const bool multipart = readLittleEndian(file, 4, 4) & 0x1000;  // the version field's flags
+    bool fits = std::fseek(file, 8, SEEK_SET) == 0;
+    for (bool moreHeaders = true; fits && moreHeaders;) {
+        int attributes = 0;
+        for (bool endOfHeader = false; fits && !endOfHeader;) {
+            fits = skipExrName(file, endOfHeader);
+            if (!fits || endOfHeader) break;
+            ++attributes;
+            bool emptyType = false;
+            unsigned char lengthBytes[4];
+            fits = skipExrName(file, emptyType) && std::fread(lengthBytes, 1, 4, file) == 4;
+            const long length = static_cast<std::int32_t>(littleEndian(lengthBytes, 4));
+            fits = fits && length >= 0 && length <= size - std::ftell(file) &&
+                   std::fseek(file, length, SEEK_CUR) == 0;
+        }
+        moreHeaders = multipart && attributes > 0;  // an empty header ends the list
+    }
+    return fits;
+}
+
+// FreeImage's TGA decoder sizes its run-length read cache as (bytes of pixel data) / rows: when
+// that is less than a pixel it reads out of bounds, and when it is zero it frees the bitmap and
+// still returns it. A TGA 2.0 postage stamp (thumbnail) claiming more pixels than its space holds
+// is copied from beyond its buffer. Both mean a damaged file: run-length packets never cross rows,
+// so each row takes at least one packet, a header byte and a pixel.
+bool tgaIsSafeToDecode(std::FILE* file) {
+    const long size = fileSize(file);
+    const auto byteAt = [file](long offset) { return readLittleEndian(file, offset, 1); };
+    const auto wordAt = [file](long offset) { return readLittleEndian(file, offset, 2); };
+    const std::uint32_t depth = byteAt(16);
+    const std::uint32_t imageType = byteAt(2);
+    if (imageType >= 9 && imageType <= 11) {
+        const std::uint32_t colourMap = byteAt(1) != 0 ? wordAt(5) * ((byteAt(7) + 7) / 8) : 0;
+        const long pixelData = 18 + static_cast<long>(byteAt(0) + colourMap);
+        const long smallestRuns = static_cast<long>((1 + (depth + 7) / 8) * wordAt(14));
+        if (size - pixelData < smallestRuns) return false;
+    }
+    // The TGA 2.0 footer: extension area offset, developer area offset, signature.
+    const long footer = size - 26;
+    const char signature[18] = "TRUEVISION-XFILE.";
+    char found[18] = {};
+    if (footer < 0 || std::fseek(file, footer + 8, SEEK_SET) != 0 ||
+        std::fread(found, 1, 18, file) != 18 || std::memcmp(found, signature, 18) != 0)
+        return true;
+    const std::uint32_t extension = readLittleEndian(file, footer, 4);
+    const long stamp = extension != 0 ? readLittleEndian(file, extension + 486L, 4) : 0;
+    if (stamp == 0 || stamp >= footer) return true;  // no postage stamp, as FreeImage reads it
+    const long stampBytes = static_cast<long>(byteAt(stamp) * byteAt(stamp + 1) * depth / 8);
+    return stamp + 2 + stampBytes <= footer;
+}
+
+// Why FreeImage must not see the file, or "" when it may.
+std::string damageFreeImageMisses(std::FILE* file, FREE_IMAGE_FORMAT format) {
+    if (format == FIF_EXR && !exrHeadersFitInFile(file))
+        return "a header attribute runs past the end of the file";
+    if (format == FIF_TARGA && !tgaIsSafeToDecode(file))
+        return "its pixel data or thumbnail is cut short";
+    return "";
 }
 
 int loadFlags(FREE_IMAGE_FORMAT format) {
@@ -54,51 +164,87 @@ int loadFlags(FREE_IMAGE_FORMAT format) {
     }
 }
 
-bool isFloat(FREE_IMAGE_TYPE type) {
-    return type == FIT_FLOAT || type == FIT_RGBF || type == FIT_RGBAF;
+// Texel x of a scanline of a float image, greyscale replicated and alpha dropped. NaN and
+// infinities are no colour, and would spread through every filter: they read as 0.
+Color floatTexel(FREE_IMAGE_TYPE type, const BYTE* scanline, int x) {
+    const auto finite = [](float v) { return std::isfinite(v) ? v : 0.0f; };
+    switch (type) {
+        case FIT_FLOAT:
+            return Color(finite(reinterpret_cast<const float*>(scanline)[x]));
+        case FIT_RGBAF: {
+            const FIRGBAF& p = reinterpret_cast<const FIRGBAF*>(scanline)[x];
+            return {finite(p.red), finite(p.green), finite(p.blue)};
+        }
+        default: {
+            const FIRGBF& p = reinterpret_cast<const FIRGBF*>(scanline)[x];
+            return {finite(p.red), finite(p.green), finite(p.blue)};
+        }
+    }
 }
 
-// NaN and infinities in a float file are no colour; they would spread through every filter.
-float finiteOrZero(float v) {
-    return std::isfinite(v) ? v : 0.0f;
+bool isFloat(FREE_IMAGE_TYPE type) {
+    return type == FIT_FLOAT || type == FIT_RGBF || type == FIT_RGBAF;
 }
 
 }  // namespace
 
 Image ImageReader::read(const std::filesystem::path& path) {
-    const std::string file = path.string();
-    if (const std::string error = openError(path); !error.empty())
-        throw InputError(file, "cannot open the image (" + error + ")");
+    const std::string name = path.string();
+    std::error_code ignored;
+    if (std::filesystem::is_directory(path, ignored))
+        throw InputError(name, "cannot open the image (a folder, not a file)");
+    const File file(std::fopen(name.c_str(), "rb"));
+    if (!file)
+        throw InputError(name,
+                         "cannot open the image (" + std::generic_category().message(errno) + ")");
 
-    const FREE_IMAGE_FORMAT format = formatOf(file);
+    const FREE_IMAGE_FORMAT format = formatOf(file.get(), name);
     if (format == FIF_UNKNOWN || !FreeImage_FIFSupportsReading(format))
-        throw InputError(file, "cannot read the image (unknown or corrupt format)");
+        throw InputError(name, "cannot read the image (unknown or corrupt format)");
 
-    FreeImage_SetOutputMessage(recordFreeImageMessage);
-    lastFreeImageMessage.clear();
-    const Bitmap bitmap(FreeImage_Load(format, file.c_str(), loadFlags(format)));
+    const auto corrupt = [&](const std::string& detail) {
+        return InputError(name, std::string("cannot read the image (corrupt or truncated ") +
+                                    FreeImage_GetFormatFromFIF(format) + " file" +
+                                    (detail.empty() ? "" : ": " + detail) + ")");
+    };
+    if (const std::string damage = damageFreeImageMisses(file.get(), format); !damage.empty())
+        throw corrupt(damage);
+    std::rewind(file.get());
+
+    startCapturingFreeImageMessages();
+    FreeImageBitmap bitmap;
+    try {
+        bitmap.reset(FreeImage_LoadFromHandle(format, &fileIO, file.get(), loadFlags(format)));
+    } catch (const std::exception& e) {
+        // From a C++ decoder inside FreeImage (OpenEXR): std::bad_alloc for a size that a damaged
+        // file claims, for example.
+        throw corrupt(e.what());
+    }
     if (!bitmap || FreeImage_GetWidth(bitmap.get()) == 0 || FreeImage_GetHeight(bitmap.get()) == 0)
-        throw InputError(
-            file, std::string("cannot read the image (corrupt or truncated ") +
-                      FreeImage_GetFormatFromFIF(format) + " file" +
-                      (lastFreeImageMessage.empty() ? "" : ": " + lastFreeImageMessage) + ")");
+        throw corrupt(lastFreeImageMessage());
 
-    // FreeImage's conversion handles every bit depth, palette, greyscale and alpha layout; it
-    // scales integer data to [0, 1] and leaves float data as it is.
+    // Float images are read as they are. Integer ones become float RGB scaled to [0, 1], still
+    // sRGB-encoded; bitmaps other than 24-bit pass through 24 bits first (expanding palettes and
+    // greyscale, dropping alpha), as FreeImage's float conversion misreads 16-bit (RGB 555, 565)
+    // ones.
     const bool linear = isFloat(FreeImage_GetImageType(bitmap.get()));
-    const Bitmap rgb(FreeImage_ConvertToRGBF(bitmap.get()));
-    if (!rgb) throw InputError(file, "cannot read the image (its pixels are not colour data)");
+    if (FreeImage_GetImageType(bitmap.get()) == FIT_BITMAP && FreeImage_GetBPP(bitmap.get()) != 24)
+        bitmap.reset(FreeImage_ConvertTo24Bits(bitmap.get()));
+    if (bitmap && !linear) bitmap.reset(FreeImage_ConvertToRGBF(bitmap.get()));
+    if (!bitmap) throw InputError(name, "cannot read the image (its pixels are not colour data)");
+    const FREE_IMAGE_TYPE type = FreeImage_GetImageType(bitmap.get());
 
-    const int width = static_cast<int>(FreeImage_GetWidth(rgb.get()));
-    const int height = static_cast<int>(FreeImage_GetHeight(rgb.get()));
-    const auto decode = [linear](float v) { return linear ? finiteOrZero(v) : srgbToLinear(v); };
+    const int width = static_cast<int>(FreeImage_GetWidth(bitmap.get()));
+    const int height = static_cast<int>(FreeImage_GetHeight(bitmap.get()));
     Image image(width, height);
     for (int y = 0; y < height; ++y) {
         // FreeImage stores rows bottom-up: image row y is scanline height - 1 - y.
-        const auto* row =
-            reinterpret_cast<const FIRGBF*>(FreeImage_GetScanLine(rgb.get(), height - 1 - y));
-        for (int x = 0; x < width; ++x)
-            image.at(x, y) = {decode(row[x].red), decode(row[x].green), decode(row[x].blue)};
+        const BYTE* scanline = FreeImage_GetScanLine(bitmap.get(), height - 1 - y);
+        for (int x = 0; x < width; ++x) {
+            const Color c = floatTexel(type, scanline, x);
+            image.at(x, y) =
+                linear ? c : Color(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
+        }
     }
     return image;
 }
