@@ -10,6 +10,7 @@
 #include <stdexcept>
 #include <system_error>
 
+#include "io/FreeImageSupport.h"
 #include "math/Float.h"
 #include "math/Srgb.h"
 
@@ -46,20 +47,9 @@ const Format* findFormat(const std::filesystem::path& path) {
     return nullptr;
 }
 
-// FreeImage reports failures through a global callback; keep the last message for ours.
-thread_local std::string lastFreeImageMessage;
-void recordFreeImageMessage(FREE_IMAGE_FORMAT, const char* message) {
-    lastFreeImageMessage = message ? message : "";
-}
-
-struct BitmapDeleter {
-    void operator()(FIBITMAP* b) const { FreeImage_Unload(b); }
-};
-using Bitmap = std::unique_ptr<FIBITMAP, BitmapDeleter>;
-
 // FreeImage stores rows bottom-up: film row y is scanline height - 1 - y.
-Bitmap toLinearBitmap(const Film& film) {
-    Bitmap bitmap(FreeImage_AllocateT(FIT_RGBF, film.width(), film.height()));
+FreeImageBitmap toLinearBitmap(const Film& film) {
+    FreeImageBitmap bitmap(FreeImage_AllocateT(FIT_RGBF, film.width(), film.height()));
     if (!bitmap) return bitmap;
     for (int y = 0; y < film.height(); ++y) {
         auto* row =
@@ -77,8 +67,8 @@ BYTE encode8(float linear) {
     return static_cast<BYTE>(std::lround(v * 255.0f));
 }
 
-Bitmap toSrgbBitmap(const Film& film) {
-    Bitmap bitmap(FreeImage_Allocate(film.width(), film.height(), 24));
+FreeImageBitmap toSrgbBitmap(const Film& film) {
+    FreeImageBitmap bitmap(FreeImage_Allocate(film.width(), film.height(), 24));
     if (!bitmap) return bitmap;
     for (int y = 0; y < film.height(); ++y) {
         BYTE* row = FreeImage_GetScanLine(bitmap.get(), film.height() - 1 - y);
@@ -110,21 +100,20 @@ void ImageWriter::write(const Film& film, const std::filesystem::path& path) {
     const Format* format = findFormat(path);
     if (!format) throw std::runtime_error(path.string() + ": unsupported image format");
 
-    FreeImage_SetOutputMessage(recordFreeImageMessage);
-    const Bitmap bitmap = format->linear ? toLinearBitmap(film) : toSrgbBitmap(film);
+    startCapturingFreeImageMessages();
+    const FreeImageBitmap bitmap = format->linear ? toLinearBitmap(film) : toSrgbBitmap(film);
     if (!bitmap) throw std::runtime_error(path.string() + ": out of memory for the image");
 
     // A unique name beside the target, so that the final rename stays within one file system.
     const auto stamp = std::chrono::steady_clock::now().time_since_epoch().count();
     std::filesystem::path temporary = path;
     temporary += ".tmp" + std::to_string(stamp);
-    lastFreeImageMessage.clear();
     if (!FreeImage_Save(format->fif, bitmap.get(), temporary.string().c_str(), format->saveFlags)) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
         throw std::runtime_error(
             path.string() + ": cannot write the image" +
-            (lastFreeImageMessage.empty() ? "" : " (" + lastFreeImageMessage + ")"));
+            (lastFreeImageMessage().empty() ? "" : " (" + lastFreeImageMessage() + ")"));
     }
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
