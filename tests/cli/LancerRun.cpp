@@ -278,11 +278,12 @@ double fractionOfPixelsWithin(const Image& a, const Image& b, double absolute, d
 
 // --- rendering ---
 
-RenderedFile renderScene(const nlohmann::json& scene, const std::vector<std::string>& options,
-                         const std::string& outputName) {
-    const TempFolder folder;
-    folder.write("scene.json", scene.dump(2));
-    std::vector<std::string> arguments{"scene.json", "-o", outputName, "--quiet"};
+namespace {
+
+// Runs `lancer SCENE -o OUTPUT --quiet OPTIONS` in `folder` and reads the output back.
+RenderedFile renderIn(const TempFolder& folder, const std::string& scene,
+                      const std::vector<std::string>& options, const std::string& outputName) {
+    std::vector<std::string> arguments{scene, "-o", outputName, "--quiet"};
     arguments.insert(arguments.end(), options.begin(), options.end());
     const RunResult run = runLancer(arguments, folder.path());
     if (run.exitStatus != 0) {
@@ -291,6 +292,21 @@ RenderedFile renderScene(const nlohmann::json& scene, const std::vector<std::str
         throw std::runtime_error(message.str());
     }
     return {readFile(folder / outputName), loadImage(folder / outputName)};
+}
+
+}  // namespace
+
+RenderedFile renderScene(const nlohmann::json& scene, const std::vector<std::string>& options,
+                         const std::string& outputName) {
+    const TempFolder folder;
+    folder.write("scene.json", scene.dump(2));
+    return renderIn(folder, "scene.json", options, outputName);
+}
+
+RenderedFile renderSceneFile(const fs::path& scenePath, const std::vector<std::string>& options,
+                             const std::string& outputName) {
+    const TempFolder folder;
+    return renderIn(folder, fs::absolute(scenePath).string(), options, outputName);
 }
 
 nlohmann::json loadWhittedScene() {

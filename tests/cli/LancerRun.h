@@ -115,6 +115,10 @@ struct RenderedFile {
 // the run fails, which fails the calling test.
 RenderedFile renderScene(const nlohmann::json& scene, const std::vector<std::string>& options = {},
                          const std::string& outputName = "out.pfm");
+// The same for a scene file left where it is (its relative model and texture paths resolve).
+RenderedFile renderSceneFile(const fs::path& scenePath,
+                             const std::vector<std::string>& options = {},
+                             const std::string& outputName = "out.pfm");
 
 // Names the tests of a parameterized suite after the `name` member of their cases.
 struct CaseName {
