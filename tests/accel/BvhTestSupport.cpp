@@ -3,10 +3,27 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iomanip>
 #include <map>
+#include <sstream>
 #include <utility>
 
 namespace lancer::test {
+
+std::string describe(const Ray& ray) {
+    std::ostringstream text;
+    text << std::setprecision(9) << "from (" << ray.origin.x << ", " << ray.origin.y << ", "
+         << ray.origin.z << ") along (" << ray.direction.x << ", " << ray.direction.y << ", "
+         << ray.direction.z << ")";
+    return text.str();
+}
+
+std::string describe(const ClosestHit& hit) {
+    if (hit.primitive < 0) return "none";
+    std::ostringstream text;
+    text << "t = " << std::hexfloat << hit.t << " on primitive " << hit.primitive;
+    return text.str();
+}
 
 TriangleSoup bumpySphere(int levels) {
     const float g = (1 + std::sqrt(5.0f)) / 2;

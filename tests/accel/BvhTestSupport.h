@@ -10,6 +10,7 @@
 #include <optional>
 #include <random>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "accel/Bvh.h"
@@ -145,6 +146,11 @@ bool bvhOccluded(const Bvh& bvh, const Ray& ray, float tMax, IntersectFn&& inter
         return intersectInLeafOrder(k, r, t).has_value();
     });
 }
+
+// The ray as text that reproduces it exactly (9 significant digits round-trip a float).
+std::string describe(const Ray& ray);
+// "t = <t in hexadecimal> on primitive <index>", or "none".
+std::string describe(const ClosestHit& hit);
 
 // Random directions, uniform on the sphere.
 inline Vec3 randomDirection(std::mt19937& rng) {

@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "BvhTestSupport.h"
@@ -57,12 +58,7 @@ void expectBvhMatchesBruteForce(const Bvh& bvh, const BruteForce& bruteForce,
         const Result& r = results[i];
         const bool hit = r.expected.primitive >= 0;
         hits += hit;
-        const auto where = [&] {
-            return testing::Message()
-                   << "ray " << i << " from (" << rays[i].origin.x << ", " << rays[i].origin.y
-                   << ", " << rays[i].origin.z << ") along (" << rays[i].direction.x << ", "
-                   << rays[i].direction.y << ", " << rays[i].direction.z << ")";
-        };
+        const auto where = [&] { return "ray " + std::to_string(i) + " " + describe(rays[i]); };
         bool ok =
             std::bit_cast<std::uint32_t>(r.actual.t) == std::bit_cast<std::uint32_t>(r.expected.t);
         EXPECT_EQ(r.actual.t, r.expected.t) << where();

@@ -15,6 +15,10 @@ fs::path meshData(const std::string& relativePath) {
     return fs::path(LANCER_MESH_TEST_DATA) / relativePath;
 }
 
+fs::path sceneModel(const std::string& relativePath) {
+    return fs::path(LANCER_SCENE_MODELS) / relativePath;
+}
+
 ScratchFolder::ScratchFolder() {
     const ::testing::TestInfo* test = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = std::string(test->test_suite_name()) + "." + test->name();

@@ -1,6 +1,6 @@
 #pragma once
 
-// Helpers shared by the OBJ/MTL tests: the copied model files, a scratch folder for files written
+// Helpers shared by the OBJ/MTL tests: the model files, a scratch folder for files written
 // by a test, a stand-in for the scene loader's texture loader, and measures of a loaded mesh.
 
 #include <gtest/gtest.h>
@@ -19,6 +19,8 @@ namespace lancer::test {
 
 // A file or folder under tests/mesh/data (see data/SOURCES.md).
 std::filesystem::path meshData(const std::string& relativePath);
+// A model under scenes/models, which the scenes use too (see its SOURCES.md).
+std::filesystem::path sceneModel(const std::string& relativePath);
 
 // A fresh folder for the files that one test writes, removed when the test ends.
 class ScratchFolder {

@@ -1,5 +1,5 @@
-// Real models (the Cornell boxes, the low-resolution bunny) and every malformed or unusual OBJ of
-// the loader test suites in data/edge_cases.
+// Real models (the Cornell boxes and the low-resolution bunny of scenes/models) and every malformed
+// or unusual OBJ of the loader test suites in data/edge_cases.
 
 #include <algorithm>
 #include <set>
@@ -20,7 +20,7 @@ const Material* findByDiffuse(const TriangleMesh& mesh, const Color& diffuse) {
 }
 
 TEST(CornellBox, OriginalHas36TrianglesAndAnEmissiveLightFacingDown) {
-    const LoadedObj loaded = loadObj(meshData("cornell_box/CornellBox-Original.obj"));
+    const LoadedObj loaded = loadObj(sceneModel("cornell_box/CornellBox-Original.obj"));
     const TriangleMesh& mesh = *loaded.mesh;
     EXPECT_TRUE(loaded.warnings.empty());
     EXPECT_EQ(mesh.triangleCount(), 36u) << "18 quads";
@@ -44,7 +44,7 @@ TEST(CornellBox, OriginalHas36TrianglesAndAnEmissiveLightFacingDown) {
 }
 
 TEST(CornellBox, MirrorBoxHasAFresnelMirrorBlock) {
-    const LoadedObj loaded = loadObj(meshData("cornell_box/CornellBox-Mirror.obj"));
+    const LoadedObj loaded = loadObj(sceneModel("cornell_box/CornellBox-Mirror.obj"));
     EXPECT_TRUE(loaded.warnings.empty());
     std::size_t mirrorTriangles = 0;
     for (std::size_t t = 0; t < loaded.mesh->triangleCount(); ++t)
@@ -53,7 +53,7 @@ TEST(CornellBox, MirrorBoxHasAFresnelMirrorBlock) {
 }
 
 TEST(CornellBox, SphereBoxHasAMirrorSphereAndAGlassSphereWithNormalsAndUvs) {
-    const LoadedObj loaded = loadObj(meshData("cornell_box/CornellBox-Sphere.obj"));
+    const LoadedObj loaded = loadObj(sceneModel("cornell_box/CornellBox-Sphere.obj"));
     const TriangleMesh& mesh = *loaded.mesh;
     EXPECT_TRUE(loaded.warnings.empty());
     EXPECT_EQ(mesh.triangleCount(), 2188u);
@@ -74,7 +74,7 @@ TEST(CornellBox, SphereBoxHasAMirrorSphereAndAGlassSphereWithNormalsAndUvs) {
 }
 
 TEST(LowResBunny, Has6598TrianglesWithUnitNormals) {
-    const LoadedObj loaded = loadObj(meshData("stanford_bunny_lowres/bunny.obj"));
+    const LoadedObj loaded = loadObj(sceneModel("stanford_bunny_lowres/bunny.obj"));
     const TriangleMesh& mesh = *loaded.mesh;
     EXPECT_TRUE(loaded.warnings.empty());
     EXPECT_EQ(mesh.triangleCount(), 6598u);
