@@ -22,7 +22,8 @@ constexpr int kBinCount = 16;
 constexpr std::uint32_t kSweepSize = 8;
 // The cost of visiting a node, in units of one primitive test. Incoherent rays wait on memory for
 // the nodes more than they compute: measured on 1M-triangle meshes, 2 gives the fastest traversal
-// and half the nodes of 1.
+// and half the nodes of 1. (With tests of four primitives at once, leaves of up to four are never
+// split whatever this cost.)
 constexpr float kNodeVisitCost = 2.0f;
 // Nodes with at most this many primitives are built, with their whole subtree, by one task.
 constexpr std::uint32_t kSequentialSubtreeSize = 4096;
@@ -169,8 +170,10 @@ BvhNode makeInterior(const NodeRange& range, int axis) {
 
 class Builder {
 public:
-    Builder(std::span<BuildPrimitive> primitives, int maxLeafSize)
-        : primitives_(primitives), maxLeafSize_(static_cast<std::uint32_t>(maxLeafSize)) {}
+    Builder(std::span<BuildPrimitive> primitives, int maxLeafSize, int primitivesPerTest)
+        : primitives_(primitives),
+          maxLeafSize_(static_cast<std::uint32_t>(maxLeafSize)),
+          primitivesPerTest_(static_cast<std::uint32_t>(primitivesPerTest)) {}
 
     std::vector<BvhNode> build(const NodeRange& root) {
         const std::unique_ptr<Subtree> tree = buildSubtree(root);
@@ -258,7 +261,7 @@ private:
         if (childrenCost == kInfinity) return leafOrMedian(maxLeafSize_);
         const float nodeArea = range.bounds.surfaceArea();
         if (count <= maxLeafSize_ &&
-            static_cast<float>(count) * nodeArea <= kNodeVisitCost * nodeArea + childrenCost)
+            testCost(count) * nodeArea <= kNodeVisitCost * nodeArea + childrenCost)
             return {};
         return decision;
     }
@@ -279,7 +282,7 @@ private:
             for (int i = 0; i < kBinCount - 1; ++i) {
                 below = merge(below, bins[i].bounds);
                 belowCount += bins[i].count;
-                leftCost[i] = static_cast<float>(belowCount) * below.surfaceArea();
+                leftCost[i] = testCost(belowCount) * below.surfaceArea();
             }
             Bounds3 above;
             std::uint32_t aboveCount = 0;
@@ -287,8 +290,7 @@ private:
                 above = merge(above, bins[i].bounds);
                 aboveCount += bins[i].count;
                 if (aboveCount == 0 || aboveCount == count) continue;
-                const float cost =
-                    leftCost[i - 1] + static_cast<float>(aboveCount) * above.surfaceArea();
+                const float cost = leftCost[i - 1] + testCost(aboveCount) * above.surfaceArea();
                 if (cost < bestCost) {
                     bestCost = cost;
                     decision.axis = axis;
@@ -326,12 +328,12 @@ private:
             Bounds3 above;
             for (std::uint32_t i = count - 1; i > 0; --i) {
                 above = merge(above, sorted[i]->bounds);
-                rightCost[i] = static_cast<float>(count - i) * above.surfaceArea();
+                rightCost[i] = testCost(count - i) * above.surfaceArea();
             }
             Bounds3 below;
             for (std::uint32_t i = 1; i < count; ++i) {
                 below = merge(below, sorted[i - 1]->bounds);
-                const float cost = static_cast<float>(i) * below.surfaceArea() + rightCost[i];
+                const float cost = testCost(i) * below.surfaceArea() + rightCost[i];
                 if (cost < bestCost) {
                     bestCost = cost;
                     decision.axis = axis;
@@ -412,19 +414,27 @@ private:
         }
     }
 
+    // The cost of testing n primitives in a leaf.
+    float testCost(std::uint32_t n) const {
+        return static_cast<float>((n + primitivesPerTest_ - 1) / primitivesPerTest_);
+    }
+
     std::span<BuildPrimitive> primitives_;
     std::uint32_t maxLeafSize_;
+    std::uint32_t primitivesPerTest_;
 };
 
 }  // namespace
 
-Bvh::Bvh(std::span<const Bounds3> primitiveBounds, int maxLeafSize)
-    : Bvh(primitiveBounds, {}, maxLeafSize) {}
+Bvh::Bvh(std::span<const Bounds3> primitiveBounds, int maxLeafSize, int primitivesPerTest)
+    : Bvh(primitiveBounds, {}, maxLeafSize, primitivesPerTest) {}
 
-Bvh::Bvh(std::span<const Bounds3> primitiveBounds, std::span<const Vec3> centroids,
-         int maxLeafSize) {
+Bvh::Bvh(std::span<const Bounds3> primitiveBounds, std::span<const Vec3> centroids, int maxLeafSize,
+         int primitivesPerTest) {
     if (maxLeafSize < 1 || maxLeafSize > kLeafCapacity)
         throw std::invalid_argument("BVH maximum leaf size must be between 1 and 65535");
+    if (primitivesPerTest < 1)
+        throw std::invalid_argument("BVH primitives per test must be at least 1");
     if (!centroids.empty() && centroids.size() != primitiveBounds.size())
         throw std::invalid_argument("BVH needs one centroid per primitive");
     // A tree of n primitives has at most 2n - 1 nodes, all addressed with 32 bits.
@@ -453,13 +463,82 @@ Bvh::Bvh(std::span<const Bounds3> primitiveBounds, std::span<const Vec3> centroi
         });
 
     bounds_ = rootBounds.bounds;
-    Builder builder(primitives, maxLeafSize);
+    Builder builder(primitives, maxLeafSize, primitivesPerTest);
     nodes_ = builder.build({0, count, rootBounds.bounds, rootBounds.centroidBounds, 0});
     primitiveOrder_.resize(count);
     tbb::parallel_for(all, [&](const tbb::blocked_range<std::uint32_t>& r) {
         for (std::uint32_t i = r.begin(); i < r.end(); ++i)
             primitiveOrder_[i] = primitives[i].index;
     });
+}
+
+WideBvh::WideBvh(const Bvh& bvh, const LeafLayout& layOutLeaf) : bounds_(bvh.bounds()) {
+    const std::span<const BvhNode> binary = bvh.nodes();
+    if (binary.empty()) return;
+    nodes_.emplace_back();
+    collapse(binary, 0, 0, layOutLeaf);
+    nodes_.shrink_to_fit();
+}
+
+// Fills wide node `index` with the binary subtree under `root`, cut into at most kWidth children
+// by opening the interior node of largest surface area (the most likely to be entered) until
+// kWidth are reached or only leaves are left; then does the same for each interior child.
+void WideBvh::collapse(std::span<const BvhNode> binary, std::uint32_t root, std::uint32_t index,
+                       const LeafLayout& layOutLeaf) {
+    constexpr int kWidth = WideBvhNode::kWidth;
+    std::array<std::uint32_t, kWidth> slots{root};
+    int slotCount = 1;
+    const auto widestInterior = [&] {
+        int widest = -1;
+        float widestArea = -1;
+        for (int i = 0; i < slotCount; ++i) {
+            const BvhNode& node = binary[slots[i]];
+            if (node.isLeaf()) continue;
+            const float area = node.box().surfaceArea();
+            if (area > widestArea) {
+                widest = i;
+                widestArea = area;
+            }
+        }
+        return widest;
+    };
+    for (int opened; slotCount < kWidth && (opened = widestInterior()) >= 0;) {
+        // Its two children take its place, in order, so that leaves keep the binary tree's order.
+        const std::uint32_t node = slots[opened];
+        std::copy_backward(slots.begin() + opened + 1, slots.begin() + slotCount,
+                           slots.begin() + slotCount + 1);
+        slots[opened] = node + 1;
+        slots[opened + 1] = binary[node].offset;
+        ++slotCount;
+    }
+
+    WideBvhNode node{};
+    std::array<std::uint32_t, kWidth> interiorChildren{};  // binary roots of the wide children
+    int interiorCount = 0;
+    auto next = static_cast<std::uint32_t>(nodes_.size());
+    for (int slot = 0; slot < kWidth; ++slot) {
+        const Bounds3 box = slot < slotCount ? binary[slots[slot]].box() : Bounds3();
+        for (int axis = 0; axis < 3; ++axis) {
+            node.bounds[0][axis][slot] = box.min[axis];
+            node.bounds[1][axis][slot] = box.max[axis];
+        }
+        if (slot >= slotCount) continue;
+        const BvhNode& child = binary[slots[slot]];
+        if (child.isLeaf()) {
+            node.child[slot] = layOutLeaf(child.offset, child.primitiveCount);
+            node.primitiveCount[slot] = child.primitiveCount;
+        } else {
+            node.child[slot] = next++;
+            interiorChildren[interiorCount++] = slots[slot];
+        }
+    }
+    // The interior children are stored side by side, after everything built so far.
+    const std::uint32_t firstChild = static_cast<std::uint32_t>(nodes_.size());
+    nodes_[index] = node;
+    nodes_.resize(next);
+    for (int i = 0; i < interiorCount; ++i)
+        collapse(binary, interiorChildren[i], firstChild + static_cast<std::uint32_t>(i),
+                 layOutLeaf);
 }
 
 }  // namespace lancer

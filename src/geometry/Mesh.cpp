@@ -1,5 +1,8 @@
 #include "geometry/Mesh.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "geometry/Triangle.h"
 #include "materials/Material.h"
 
@@ -7,13 +10,24 @@ namespace lancer {
 
 namespace {
 
+constexpr std::size_t kGrainSize = 16 * 1024;
+
+// Runs body(i) for i in [0, count) on the TBB threads.
+template <typename Body>
+void parallelFor(std::size_t count, Body&& body) {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kGrainSize), [&](const auto& r) {
+        for (std::size_t i = r.begin(); i < r.end(); ++i)
+            body(i);
+    });
+}
+
 std::vector<Bounds3> triangleBounds(const TriangleMesh& mesh) {
     std::vector<Bounds3> bounds(mesh.triangleCount());
-    for (std::size_t i = 0; i < bounds.size(); ++i) {
+    parallelFor(bounds.size(), [&](std::size_t i) {
         const std::uint32_t* v = &mesh.indices[3 * i];
         bounds[i] =
             merge(Bounds3(mesh.positions[v[0]], mesh.positions[v[1]]), mesh.positions[v[2]]);
-    }
+    });
     return bounds;
 }
 
@@ -21,51 +35,104 @@ std::vector<Bounds3> triangleBounds(const TriangleMesh& mesh) {
 void reorderTriangles(TriangleMesh& mesh, std::span<const std::uint32_t> order) {
     std::vector<std::uint32_t> indices(mesh.indices.size());
     std::vector<std::uint32_t> faceMaterials(mesh.faceMaterials.size());
-    for (std::size_t k = 0; k < order.size(); ++k) {
+    parallelFor(order.size(), [&](std::size_t k) {
         for (std::size_t j = 0; j < 3; ++j)
             indices[3 * k + j] = mesh.indices[3 * std::size_t{order[k]} + j];
         faceMaterials[k] = mesh.faceMaterials[order[k]];
-    }
+    });
     mesh.indices = std::move(indices);
     mesh.faceMaterials = std::move(faceMaterials);
 }
 
-}  // namespace
-
-Mesh::Mesh(TriangleMesh triangles)
-    : Shape(nullptr), triangles_(std::move(triangles)), bvh_(triangleBounds(triangles_)) {
-    reorderTriangles(triangles_, bvh_.primitiveOrder());
+std::uint32_t packCount(std::uint32_t triangleCount) {
+    return (triangleCount + TrianglePack::kLanes - 1) / TrianglePack::kLanes;
 }
 
-std::optional<TriangleIntersection> Mesh::intersectTriangle(std::uint32_t k, const Ray& ray,
-                                                            float tMax) const {
-    const std::uint32_t* v = &triangles_.indices[3 * std::size_t{k}];
-    return Triangle::intersect(triangles_.positions[v[0]], triangles_.positions[v[1]],
-                               triangles_.positions[v[2]], ray, tMax);
+// The lanes holding a leaf's triangles in the pack-th pack of a leaf of `count`.
+int leafLanes(std::uint32_t pack, std::uint32_t count) {
+    const std::uint32_t left = count - pack * TrianglePack::kLanes;
+    return left >= TrianglePack::kLanes ? Float4::kAllLanes : (1 << left) - 1;
+}
+
+}  // namespace
+
+Mesh::Mesh(TriangleMesh triangles) : Shape(nullptr), triangles_(std::move(triangles)) {
+    // The binary tree (and its primitive order) is dropped once collapsed.
+    const Bvh binary(triangleBounds(triangles_), Bvh::kDefaultMaxLeafSize, TrianglePack::kLanes);
+    reorderTriangles(triangles_, binary.primitiveOrder());
+    // Leaves get their packs in the order the collapse meets them, which keeps the leaves of a
+    // node side by side in memory; the packs are filled afterwards, in parallel.
+    struct Leaf {
+        std::uint32_t first, count, firstPack;
+    };
+    std::vector<Leaf> leaves;
+    std::uint32_t packsSoFar = 0;
+    bvh_ = WideBvh(binary, [&](std::uint32_t first, std::uint32_t count) {
+        leaves.push_back({first, count, packsSoFar});
+        packsSoFar += packCount(count);
+        return leaves.back().firstPack;
+    });
+    packs_.resize(packsSoFar);  // zeros in the lanes left over
+    parallelFor(leaves.size(), [&](std::size_t i) {
+        const Leaf& leaf = leaves[i];
+        for (std::uint32_t k = 0; k < leaf.count; ++k) {
+            TrianglePack& pack = packs_[leaf.firstPack + k / TrianglePack::kLanes];
+            const auto lane = static_cast<int>(k % TrianglePack::kLanes);
+            const std::uint32_t triangle = leaf.first + k;
+            const std::uint32_t* v = &triangles_.indices[3 * std::size_t{triangle}];
+            pack.set(lane, triangles_.positions[v[0]], triangles_.positions[v[1]],
+                     triangles_.positions[v[2]]);
+            pack.triangle[lane] = triangle;
+        }
+    });
+}
+
+void Mesh::prefetchPack(std::uint32_t pack) const {
+    // Packs are 16-byte aligned, so one may start anywhere in a cache line.
+    const auto* first = reinterpret_cast<const char*>(&packs_[pack]);
+    for (std::size_t offset = 0; offset < sizeof(TrianglePack); offset += 64)
+        prefetch(first + offset);
+    prefetch(first + sizeof(TrianglePack) - 1);
 }
 
 bool Mesh::intersect(const Ray& ray, float tMax, Hit& hit) const {
+    const TriangleIntersector intersector(ray);
+    if (!intersector.canHit()) return false;
     // Only barycentrics and t during traversal; the hit record is filled once, for the nearest.
     TriangleIntersection nearest{};
     std::uint32_t nearestIndex = 0;
-    const bool found = bvh_.intersect(ray, tMax, [&](std::uint32_t k, const Ray& r, float& tFar) {
-        const auto at = intersectTriangle(k, r, tFar);
-        if (!at) return false;
-        nearest = *at;
-        nearestIndex = k;
-        tFar = at->t;
-        return true;
-    });
-    if (!found) return false;
+    const auto intersectLeaf = [&](std::uint32_t firstPack, std::uint32_t count, float& tFar) {
+        bool found = false;
+        for (std::uint32_t p = 0; p < packCount(count); ++p) {
+            const TrianglePack& pack = packs_[firstPack + p];
+            const PackHits hits = intersector.intersect(pack, leafLanes(p, count), tFar);
+            if (hits.lanes == 0) continue;
+            const int lane = hits.nearestLane();
+            nearest = hits.at(lane);
+            nearestIndex = pack.triangle[lane];
+            tFar = nearest.t;
+            found = true;
+        }
+        return found;
+    };
+    const auto prefetchLeaf = [&](std::uint32_t firstPack) { prefetchPack(firstPack); };
+    if (!bvh_.intersect(ray, tMax, intersectLeaf, prefetchLeaf)) return false;
     Triangle::fillHit(triangles_, nearestIndex, nearest, hit);
     hit.shape = this;
     return true;
 }
 
 bool Mesh::occluded(const Ray& ray, float tMax) const {
-    return bvh_.occluded(ray, tMax, [&](std::uint32_t k, const Ray& r, float tFar) {
-        return intersectTriangle(k, r, tFar).has_value();
-    });
+    const TriangleIntersector intersector(ray);
+    if (!intersector.canHit()) return false;
+    const auto occludedLeaf = [&](std::uint32_t firstPack, std::uint32_t count, float tFar) {
+        for (std::uint32_t p = 0; p < packCount(count); ++p)
+            if (intersector.intersect(packs_[firstPack + p], leafLanes(p, count), tFar).lanes != 0)
+                return true;
+        return false;
+    };
+    const auto prefetchLeaf = [&](std::uint32_t firstPack) { prefetchPack(firstPack); };
+    return bvh_.occluded(ray, tMax, occludedLeaf, prefetchLeaf);
 }
 
 bool Mesh::hasTransmissiveMaterial() const {
@@ -78,7 +145,8 @@ std::size_t Mesh::memoryBytes() const {
     const TriangleMesh& m = triangles_;
     return m.positions.size() * sizeof(Vec3) + m.normals.size() * sizeof(Vec3) +
            m.uvs.size() * sizeof(Vec2) + m.indices.size() * sizeof(std::uint32_t) +
-           m.faceMaterials.size() * sizeof(std::uint32_t) + bvh_.memoryBytes();
+           m.faceMaterials.size() * sizeof(std::uint32_t) + bvh_.memoryBytes() +
+           packs_.size() * sizeof(TrianglePack);
 }
 
 }  // namespace lancer

@@ -8,8 +8,10 @@
 namespace lancer {
 
 // A triangle mesh as one shape, with its own BVH over its triangles (the bottom level of the
-// scene's two-level structure). The triangles are reordered to follow the BVH's leaves, so that
-// a leaf's triangles are contiguous in memory. Shared by all instances of the same model.
+// scene's two-level structure): the binary tree the build gives, collapsed into an 8-wide one for
+// the traversal, whose leaves hold their triangles' vertices in packs of four tested together.
+// The triangles are reordered to follow the BVH's leaves. Shared by all instances of the same
+// model.
 class Mesh final : public Shape {
 public:
     explicit Mesh(TriangleMesh triangles);
@@ -25,12 +27,14 @@ public:
     std::size_t memoryBytes() const;
 
 private:
-    // Triangle k's intersection with the ray, if any.
-    std::optional<TriangleIntersection> intersectTriangle(std::uint32_t k, const Ray& ray,
-                                                          float tMax) const;
+    // Asks the cache for a leaf's first pack.
+    void prefetchPack(std::uint32_t pack) const;
 
     TriangleMesh triangles_;
-    Bvh bvh_;
+    WideBvh bvh_;
+    // The vertices again, for the traversal: each leaf's triangles in packs of their own, so that
+    // a leaf of up to four is one 4-wide test, and read without going through the index buffer.
+    std::vector<TrianglePack> packs_;
 };
 
 }  // namespace lancer

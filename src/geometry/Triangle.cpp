@@ -18,14 +18,6 @@ std::shared_ptr<const TriangleMesh> makeSingleTriangleMesh(
     return mesh;
 }
 
-// The 2D edge function a.x * b.y - a.y * b.x, recomputed in double when float rounds it to exactly
-// zero: that is what makes the test watertight on shared edges (Woop et al. 2013).
-float edgeFunction(const Vec3& a, const Vec3& b) {
-    const float e = a.x * b.y - a.y * b.x;
-    if (e != 0) return e;
-    return static_cast<float>(double(a.x) * double(b.y) - double(a.y) * double(b.x));
-}
-
 }  // namespace
 
 Triangle::Triangle(std::shared_ptr<const TriangleMesh> mesh, std::uint32_t index,
@@ -60,64 +52,12 @@ bool Triangle::intersect(const Ray& ray, float tMax, Hit& hit) const {
     return true;
 }
 
-// Watertight ray/triangle intersection (Woop, Benthin and Wald 2013, in pbrt's formulation): the
-// triangle is moved into a frame where the ray starts at the origin and runs along +z, so that
-// the test reduces to the signs of three 2D edge functions, which agree exactly along a shared
-// edge. The t > 0 test is made conservative with a bound on the error of the computed t.
 std::optional<TriangleIntersection> Triangle::intersect(const Vec3& v0, const Vec3& v1,
                                                         const Vec3& v2, const Ray& ray,
                                                         float tMax) {
-    // Translate to the ray origin, permute so that the ray's largest component is z, then shear.
-    const int kz = maxDimension(ray.direction);
-    const int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    const Vec3 d = permute(ray.direction, kx, ky, kz);
-    if (d.z == 0) return std::nullopt;
-    Vec3 p0 = permute(v0 - ray.origin, kx, ky, kz);
-    Vec3 p1 = permute(v1 - ray.origin, kx, ky, kz);
-    Vec3 p2 = permute(v2 - ray.origin, kx, ky, kz);
-    const float shearX = -d.x / d.z, shearY = -d.y / d.z, shearZ = 1.0f / d.z;
-    for (Vec3* p : {&p0, &p1, &p2}) {
-        p->x += shearX * p->z;
-        p->y += shearY * p->z;
-    }
-
-    const float e0 = edgeFunction(p1, p2);
-    const float e1 = edgeFunction(p2, p0);
-    const float e2 = edgeFunction(p0, p1);
-    if ((e0 < 0 || e1 < 0 || e2 < 0) && (e0 > 0 || e1 > 0 || e2 > 0)) return std::nullopt;
-    const float det = e0 + e1 + e2;
-    if (det == 0) return std::nullopt;  // degenerate triangle, or a ray in its plane
-
-    // The rounding error of the sheared x and y grows with z in world units (the shear factors
-    // are at most 1), so its bound takes z before it is scaled to ray units below.
-    const float maxZWorld = maxComponent(abs(Vec3(p0.z, p1.z, p2.z)));
-
-    // t, still scaled by det; compared against the range without dividing.
-    p0.z *= shearZ;
-    p1.z *= shearZ;
-    p2.z *= shearZ;
-    const float tScaled = e0 * p0.z + e1 * p1.z + e2 * p2.z;
-    if (det < 0 && (tScaled >= 0 || tScaled < tMax * det)) return std::nullopt;
-    if (det > 0 && (tScaled <= 0 || tScaled > tMax * det)) return std::nullopt;
-
-    const float invDet = 1.0f / det;
-    const float t = tScaled * invDet;
-    if (!(t < tMax)) return std::nullopt;
-
-    // Reject t that is not certainly positive given the rounding errors above (pbrt 6.8.4).
-    const float maxZ = maxComponent(abs(Vec3(p0.z, p1.z, p2.z)));
-    const float maxX = maxComponent(abs(Vec3(p0.x, p1.x, p2.x)));
-    const float maxY = maxComponent(abs(Vec3(p0.y, p1.y, p2.y)));
-    const float deltaZ = gamma(3) * maxZ;
-    const float deltaX = gamma(5) * (maxX + maxZWorld);
-    const float deltaY = gamma(5) * (maxY + maxZWorld);
-    const float deltaE = 2 * (gamma(2) * maxX * maxY + deltaY * maxX + deltaX * maxY);
-    const float maxE = maxComponent(abs(Vec3(e0, e1, e2)));
-    const float deltaT =
-        3 * (gamma(3) * maxE * maxZ + deltaE * maxZ + deltaZ * maxE) * std::abs(invDet);
-    if (t <= deltaT) return std::nullopt;
-
-    return TriangleIntersection{e0 * invDet, e1 * invDet, e2 * invDet, t};
+    const TriangleIntersector intersector(ray);
+    if (!intersector.canHit()) return std::nullopt;
+    return intersector.intersect(v0, v1, v2, tMax);
 }
 
 void Triangle::fillHit(const TriangleMesh& mesh, std::uint32_t index,

@@ -6,15 +6,10 @@
 #include <optional>
 
 #include "geometry/Shape.h"
+#include "geometry/TriangleIntersector.h"
 #include "geometry/TriangleMesh.h"
 
 namespace lancer {
-
-// Where a ray meets a triangle: barycentric coordinates of vertices 0, 1, 2 and the ray's t.
-struct TriangleIntersection {
-    float b0, b1, b2;
-    float t;
-};
 
 // Triangle `index` of a TriangleMesh. Its front side, the one (v1 - v0) x (v2 - v0) points to, is
 // the side it emits light on. Vertex normals, where the mesh has them, give smooth shading; uvs
@@ -34,7 +29,7 @@ public:
 
     float area() const;
 
-    // Watertight ray/triangle intersection with 0 < t < tMax.
+    // Watertight ray/triangle intersection with 0 < t < tMax (see TriangleIntersector).
     static std::optional<TriangleIntersection> intersect(const Vec3& p0, const Vec3& p1,
                                                          const Vec3& p2, const Ray& ray,
                                                          float tMax);
