@@ -9,22 +9,6 @@
 
 namespace lancer::test {
 
-TempFolder::TempFolder() {
-    // Unique across the processes that ctest runs in parallel and across folders of one process.
-    static std::atomic<unsigned> counter{0};
-    std::random_device random;
-    for (;;) {
-        path_ = fs::temp_directory_path() /
-                ("lancer-textures-" + std::to_string(random()) + "-" + std::to_string(counter++));
-        if (fs::create_directory(path_)) return;
-    }
-}
-
-TempFolder::~TempFolder() {
-    std::error_code ignored;
-    fs::remove_all(path_, ignored);
-}
-
 fs::path dataFolder() {
     return LANCER_TEXTURE_TEST_DATA;
 }

@@ -12,23 +12,11 @@
 
 #include "materials/Image.h"
 
+#include "TempFolder.h"
+
 namespace lancer::test {
 
 namespace fs = std::filesystem;
-
-// A fresh, empty folder under the system's temporary folder, deleted with its contents at the end.
-class TempFolder {
-public:
-    TempFolder();
-    ~TempFolder();
-    TempFolder(const TempFolder&) = delete;
-    TempFolder& operator=(const TempFolder&) = delete;
-
-    fs::path operator/(const fs::path& name) const { return path_ / name; }
-
-private:
-    fs::path path_;
-};
 
 // The folder of the small real textures copied into the test sources (see data/SOURCES.md).
 fs::path dataFolder();
