@@ -15,7 +15,8 @@ class Shape;
 struct Hit {
     float t = kInfinity;  // ray parameter of the hit
     Vec3 p;               // the hit point
-    Vec3 pError;          // bound on the absolute error of p, per component
+    Vec3 pError;          // per-component error bound of p; it bounds p's distance from the
+                          // surface (what offsetting spawned rays needs), not its drift along it
     Vec3 ng;              // unit geometric normal on the shape's true side (outside / front)
     Vec3 ns;              // unit shading normal, in the same hemisphere as ng
     Vec3 dpdu, dpdv;      // how p moves with u and with v along the surface
