@@ -69,9 +69,9 @@
 //   POV-Ray: +AM1 (non-adaptive supersampling) +A0.0 (threshold 0: every pixel is supersampled)
 //   +R4 (a 4 x 4 grid) +J1.0 (each sample jittered within its grid cell): 16 stratified jittered
 //   samples per pixel, the same pattern as lancer's. POV-Ray's method 1 also keeps the first
-//   ray it traced at the pixel centre and averages it in (17 camera rays per pixel, plus about
-//   6% more for the line above and the column left of each 32 x 32 block, which it traces to
-//   decide whether to antialias): POV-Ray shoots ~1.07x lancer's camera rays. No setting gives
+//   ray it traced at the pixel centre and averages it in (17 camera rays per pixel), and traces
+//   the row above and the column left of each 32 x 32 block once more to decide whether to
+//   antialias: 17.06 camera rays per pixel in all, 1.066x lancer's 16. No setting gives
 //   exactly 16: +AM2 with +R3 traces 22 rays per pixel (a 5 x 5 corner grid), +R2 about 6.
 //
 // * Not the same: lancer renders in single precision with a pbrt-style error-bounded offset for
