@@ -6,6 +6,7 @@
 
 namespace lancer {
 
+class Light;
 class Material;
 
 // A surface a ray can hit. A shape may carry the material it is made of; shapes that carry
@@ -43,8 +44,15 @@ public:
 
     const Material* material() const { return material_; }
 
+    // The light whose visible surface this shape is (an area light's quad or sphere, an emissive
+    // surface sampled as a light), or null. Integrators use it to weigh a ray that hits the light
+    // against sampling the light directly.
+    const Light* areaLight() const { return areaLight_; }
+    void setAreaLight(const Light* light) { areaLight_ = light; }
+
 private:
     const Material* material_;
+    const Light* areaLight_ = nullptr;
 };
 
 }  // namespace lancer

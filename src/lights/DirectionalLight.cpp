@@ -1,5 +1,7 @@
 #include "lights/DirectionalLight.h"
 
+#include "math/Float.h"
+
 namespace lancer {
 
 DirectionalLight::DirectionalLight(const Vec3& direction, const Color& irradiance)
@@ -11,6 +13,11 @@ LightSample DirectionalLight::sample(const Vec3&, const Vec2&) const {
     s.irradiance = irradiance_;
     s.atInfinity = true;
     return s;
+}
+
+// The light that crosses a disc as wide as the scene.
+Color DirectionalLight::power(float sceneRadius) const {
+    return kPi * sceneRadius * sceneRadius * irradiance_;
 }
 
 }  // namespace lancer

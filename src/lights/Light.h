@@ -6,12 +6,16 @@
 
 namespace lancer {
 
+struct Hit;
+
 // What a light delivers to a point: from which direction, how much, and from where.
 struct LightSample {
     Vec3 wi;           // unit direction from the point towards the light
-    Color irradiance;  // E_l: irradiance on a surface facing the light, before occlusion
+    Color irradiance;  // E_l: irradiance on a surface facing the light, before occlusion. For a
+                       // light with an extent, the one-sample estimate radiance / pdf.
     Vec3 position;     // the point on the light (meaningless when atInfinity)
     bool atInfinity = false;
+    float pdf = 0;  // solid-angle density of wi as seen from the point; 0 for delta lights
 };
 
 // A light source, sampled from a point being shaded.
@@ -24,6 +28,14 @@ public:
 
     // A delta light (a point or a direction) is one sample exactly: u is ignored.
     virtual bool isDelta() const = 0;
+
+    // The solid-angle density with which sample(p, ·) picks the direction wi that reaches the
+    // light's surface at `onLight` (for multiple importance sampling). 0 for delta lights.
+    virtual float pdf(const Vec3& p, const Vec3& wi, const Hit& onLight) const;
+
+    // The total power (flux) the light emits, for choosing lights in proportion to it. Lights at
+    // infinity need the radius of a sphere bounding the scene.
+    virtual Color power(float sceneRadius) const = 0;
 };
 
 }  // namespace lancer

@@ -1,5 +1,7 @@
 #include "lights/PointLight.h"
 
+#include "math/Float.h"
+
 namespace lancer {
 
 PointLight::PointLight(const Vec3& position, const Color& intensity, bool inverseSquareFalloff)
@@ -13,6 +15,11 @@ LightSample PointLight::sample(const Vec3& p, const Vec2&) const {
     s.irradiance = inverseSquareFalloff_ ? intensity_ / distanceSquared : intensity_;
     s.position = position_;
     return s;
+}
+
+// Without inverse-square falloff the power is infinite in principle; the same 4 pi I is used.
+Color PointLight::power(float) const {
+    return 4 * kPi * intensity_;
 }
 
 }  // namespace lancer

@@ -12,6 +12,7 @@ public:
 
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     bool isDelta() const override { return true; }
+    Color power(float sceneRadius) const override;
 
 private:
     Vec3 position_;

@@ -1,0 +1,64 @@
+#include "math/Distribution1D.h"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "math/Float.h"
+
+namespace lancer {
+
+Distribution1D::Distribution1D(std::vector<float> weights) : weights_(std::move(weights)) {
+    if (weights_.empty()) throw std::invalid_argument("Distribution1D: no weights");
+    double sum = 0;
+    for (float w : weights_) {
+        if (!(w >= 0) || !std::isfinite(w))
+            throw std::invalid_argument("Distribution1D: weights must be finite and >= 0");
+        sum += w;
+    }
+    // All zero: every cell equally likely, so that sampling still returns something valid.
+    if (sum == 0) std::fill(weights_.begin(), weights_.end(), 1.0f);
+    const std::size_t n = weights_.size();
+    cdf_.resize(n + 1);
+    cdf_[0] = 0;
+    for (std::size_t i = 0; i < n; ++i)
+        cdf_[i + 1] = cdf_[i] + weights_[i];
+    const double total = cdf_[n];
+    for (double& c : cdf_)
+        c /= total;
+    cdf_[n] = 1;
+    integral_ = static_cast<float>(sum / static_cast<double>(n));
+}
+
+std::size_t Distribution1D::sampleDiscrete(float u, float* pmfOut, float* uRemapped) const {
+    // The last index i with cdf_[i] <= u; cells of zero weight are never chosen.
+    const auto upper = std::upper_bound(cdf_.begin(), cdf_.end(), static_cast<double>(u));
+    std::size_t i = static_cast<std::size_t>(std::max<std::ptrdiff_t>(upper - cdf_.begin() - 1, 0));
+    i = std::min(i, weights_.size() - 1);
+    while (cdf_[i + 1] == cdf_[i] && i > 0)
+        --i;
+    const double width = cdf_[i + 1] - cdf_[i];
+    if (pmfOut) *pmfOut = static_cast<float>(width);
+    if (uRemapped)
+        *uRemapped = std::min(static_cast<float>((u - cdf_[i]) / width), kOneMinusEpsilon);
+    return i;
+}
+
+float Distribution1D::pmf(std::size_t i) const {
+    return static_cast<float>(cdf_[i + 1] - cdf_[i]);
+}
+
+float Distribution1D::sampleContinuous(float u, float* pdfOut) const {
+    float pmfOfCell = 0, offset = 0;
+    const std::size_t i = sampleDiscrete(u, &pmfOfCell, &offset);
+    const float n = static_cast<float>(weights_.size());
+    if (pdfOut) *pdfOut = pmfOfCell * n;
+    return std::min((static_cast<float>(i) + offset) / n, kOneMinusEpsilon);
+}
+
+float Distribution1D::pdf(float x) const {
+    const std::size_t n = weights_.size();
+    const std::size_t i = std::min(static_cast<std::size_t>(x * static_cast<float>(n)), n - 1);
+    return pmf(i) * static_cast<float>(n);
+}
+
+}  // namespace lancer

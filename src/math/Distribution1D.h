@@ -1,0 +1,37 @@
+#pragma once
+
+#include <cstddef>
+#include <vector>
+
+namespace lancer {
+
+// A piecewise-constant density over [0, 1) with one cell per weight (or a discrete distribution
+// over the weights' indices), sampled by inverting its cumulative distribution. Light selection
+// in proportion to power and tabulated filter sampling are both built on it.
+class Distribution1D {
+public:
+    // Weights must be finite and non-negative; if they are all zero the distribution is uniform.
+    explicit Distribution1D(std::vector<float> weights);
+
+    std::size_t size() const { return weights_.size(); }
+    // The sum of the weights divided by their count: the integral of the piecewise function.
+    float integral() const { return integral_; }
+
+    // The index whose cumulative interval holds u in [0,1); its probability in *pmf if given, and
+    // in *uRemapped where u falls within that interval, rescaled to [0,1) for reuse.
+    std::size_t sampleDiscrete(float u, float* pmf = nullptr, float* uRemapped = nullptr) const;
+    // The probability of picking index i.
+    float pmf(std::size_t i) const;
+
+    // A point x in [0,1) distributed as the piecewise-constant density; the density there in *pdf.
+    float sampleContinuous(float u, float* pdf = nullptr) const;
+    // The density at x in [0,1).
+    float pdf(float x) const;
+
+private:
+    std::vector<float> weights_;
+    std::vector<double> cdf_;  // cdf_[i]: probability of the cells before i; cdf_.back() = 1
+    float integral_ = 0;
+};
+
+}  // namespace lancer
