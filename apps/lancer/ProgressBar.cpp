@@ -34,10 +34,18 @@ void ProgressBar::update(int done, int total) {
     const int filled = static_cast<int>(fraction * kWidth);
     const std::string bar = std::string(static_cast<std::size_t>(filled), '#') +
                             std::string(static_cast<std::size_t>(kWidth - filled), '-');
-    const std::string eta = done > 0 ? formatDuration(elapsed / fraction - elapsed) : "?";
-    std::fprintf(stderr, "\r[%s] %3d%%  elapsed %s  ETA %s ", bar.c_str(),
-                 static_cast<int>(fraction * 100), formatDuration(elapsed).c_str(), eta.c_str());
+    std::fprintf(stderr, "\r[%s] %s ", bar.c_str(), describe(done, total, elapsed).c_str());
     std::fflush(stderr);
+}
+
+std::string ProgressBar::describe(int done, int total, double elapsedSeconds) {
+    const double fraction = total > 0 ? static_cast<double>(done) / total : 1.0;
+    const std::string eta =
+        done > 0 ? formatDuration(elapsedSeconds / fraction - elapsedSeconds) : "?";
+    char text[96];
+    std::snprintf(text, sizeof text, "%3d%%  elapsed %s  ETA %s", static_cast<int>(fraction * 100),
+                  formatDuration(elapsedSeconds).c_str(), eta.c_str());
+    return text;
 }
 
 void ProgressBar::finish() {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <chrono>
+#include <string>
 
 namespace lancer {
 
@@ -11,6 +12,8 @@ public:
     explicit ProgressBar(bool enabled);
 
     void update(int done, int total);
+    // "42%  elapsed 0:03  ETA 0:05": the text of the bar, also the window's title.
+    static std::string describe(int done, int total, double elapsedSeconds);
     // Erases the bar, leaving the line free for the final report.
     void finish();
 

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
@@ -12,9 +13,13 @@
 #include <sstream>
 #include <string>
 
+#include "LiveRender.h"
 #include "ProgressBar.h"
+#include "Viewer.h"
 #include "io/ImageWriter.h"
 #include "io/InputError.h"
+#include "radiosity/RadiosityIntegrator.h"
+#include "radiosity/RadiositySolver.h"
 #include "render/Integrator.h"
 #include "render/Renderer.h"
 #include "scene/SceneLoader.h"
@@ -47,6 +52,7 @@ struct Options {
     bool window = false;
     bool quiet = false;
     bool stats = false;
+    std::optional<std::string> saveRadiosity, loadRadiosity;
 };
 
 int fail(int status, const std::string& message) {
@@ -78,7 +84,7 @@ std::optional<PixelWindow> parseCrop(const std::string& text, int width, int hei
     return w;
 }
 
-void printStatistics(const Scene& scene) {
+void printStatistics(const Scene& scene, const RenderCounters& counters) {
     const Scene::Statistics& s = scene.statistics();
     const double megabytes = static_cast<double>(s.meshBytes) / (1 << 20);
     std::fprintf(stderr, "stats: %zu objects in the BVH (%zu bytes of nodes), %zu planes\n",
@@ -91,6 +97,21 @@ void printStatistics(const Scene& scene) {
             stderr, "stats: meshes and their BVHs: %.2f MB, %.1f bytes per stored triangle\n",
             megabytes, static_cast<double>(s.meshBytes) / static_cast<double>(s.uniqueTriangles));
     std::fprintf(stderr, "stats: scene loaded in %.3f s\n", s.loadSeconds);
+    std::fprintf(stderr, "stats: %llu rays, %llu samples, %llu of them NaN or infinite (dropped)\n",
+                 static_cast<unsigned long long>(counters.rays),
+                 static_cast<unsigned long long>(counters.samples),
+                 static_cast<unsigned long long>(counters.nonFiniteSamples));
+}
+
+// "16 spp", or with adaptive sampling the mean count actually taken and the range allowed.
+std::string describeSamples(const RenderSettings& settings, const RenderCounters& counters) {
+    if (!settings.adaptive) return std::to_string(settings.samplesPerPixel) + " spp";
+    char text[128];
+    std::snprintf(text, sizeof text, "%.1f spp on average (adaptive, %d to %d)",
+                  counters.meanSamplesPerPixel(),
+                  std::min(settings.adaptive->minSamples, settings.samplesPerPixel),
+                  settings.samplesPerPixel);
+    return text;
 }
 
 std::string describeRate(std::uint64_t rays, double seconds) {
@@ -99,6 +120,38 @@ std::string describeRate(std::uint64_t rays, double seconds) {
                   static_cast<double>(rays) / 1e6,
                   seconds > 0 ? static_cast<double>(rays) / 1e6 / seconds : 0.0);
     return text;
+}
+
+// The radiosity integrator with its solution, solved or loaded (and saved if asked), reported in
+// one line.
+std::unique_ptr<Integrator> prepareRadiosity(const Scene& scene, const Options& options) {
+    RadiositySolver solver(scene);
+    RadiositySolution solution;
+    if (options.loadRadiosity) {
+        solution = RadiositySolution::load(*options.loadRadiosity);
+        if (solution.fingerprint() != solver.fingerprint())
+            throw InputError(*options.loadRadiosity,
+                             "this radiosity solution was solved for another scene (its geometry, "
+                             "materials, lights or \"radiosity\" settings differ)");
+    } else {
+        solution = solver.solve();
+    }
+    if (options.saveRadiosity) solution.save(*options.saveRadiosity);
+    if (!options.quiet) {
+        const RadiosityStatistics& s = solution.statistics();
+        std::fprintf(stderr,
+                     "lancer: radiosity%s: %llu patches, %llu elements, %llu shots, residual "
+                     "unshot power %.4g W (%.3g%% of %.4g W), solved in %.2f s\n",
+                     options.loadRadiosity ? (" loaded from " + *options.loadRadiosity).c_str() : "",
+                     static_cast<unsigned long long>(s.patches),
+                     static_cast<unsigned long long>(s.elements),
+                     static_cast<unsigned long long>(s.shots), s.residualPower,
+                     s.initialPower > 0 ? 100 * s.residualPower / s.initialPower : 0.0,
+                     s.initialPower, s.seconds);
+    }
+    return std::make_unique<RadiosityIntegrator>(
+        scene, scene.settings().maxDepth,
+        std::make_shared<const RadiositySolution>(std::move(solution)));
 }
 
 int run(const Options& options) {
@@ -137,39 +190,61 @@ int run(const Options& options) {
         renderOptions.crop = parseCrop(*options.crop, settings.width, settings.height, error);
         if (!renderOptions.crop) return usageError(error);
     }
-    if (options.window && !options.quiet)
-        std::cerr << "lancer: warning: --window is not available in this build yet; rendering "
-                     "without it\n";
 
     std::unique_ptr<Integrator> integrator;
     try {
-        integrator = Integrator::create(scene);
+        if ((options.saveRadiosity || options.loadRadiosity) && settings.integrator != "radiosity")
+            return usageError("--save-radiosity and --load-radiosity need --integrator radiosity");
+        integrator = settings.integrator == "radiosity" ? prepareRadiosity(scene, options)
+                                                        : Integrator::create(scene);
     } catch (const std::invalid_argument& e) {
         return usageError(e.what());
     }
 
-    ProgressBar progress(!options.quiet && isatty(STDERR_FILENO));
-    renderOptions.onTileDone = [&](int done, int total) { progress.update(done, total); };
+    // Writes the image as soon as its render ends; returns the exit status.
+    const auto deliver = [&](const RenderResult& result) {
+        ImageWriter::write(result.film, output);
+        if (result.interrupted) {
+            std::cerr << "lancer: interrupted; the part rendered so far was written to "
+                      << output.string() << '\n';
+            return kExitInterrupted;
+        }
+        if (options.stats) printStatistics(scene, result.counters);
+        if (!options.quiet)
+            std::cerr << "lancer: " << output.string() << ": " << settings.width << "x"
+                      << settings.height << ", " << describeSamples(settings, result.counters)
+                      << ", " << result.threads << " threads, "
+                      << describeRate(result.counters.rays, result.seconds) << '\n';
+        return 0;
+    };
+
+    std::unique_ptr<Viewer> viewer;
+    if (options.window) {
+        std::string error;
+        viewer = Viewer::open("lancer: " + fs::path(options.scene).filename().string(),
+                              settings.width, settings.height, error);
+        if (!viewer && !options.quiet)
+            std::cerr << "lancer: warning: --window: " << error << "; rendering without it\n";
+    }
+
     renderOptions.cancel = &interruptRequested;
     std::signal(SIGINT, onInterrupt);
+    if (viewer) {
+        // The window stays open after the render, until closed; Ctrl-C closes it too.
+        const int status = LiveRender(*viewer, scene, *integrator, renderOptions, output,
+                                      options.quiet)
+                               .run(deliver);
+        std::signal(SIGINT, SIG_DFL);
+        return status;
+    }
+    ProgressBar progress(!options.quiet && isatty(STDERR_FILENO));
+    renderOptions.onTileDone = [&](const FinishedTile& tile) {
+        progress.update(tile.tilesDone, tile.tilesTotal);
+    };
     const RenderResult result = Renderer(scene, *integrator).render(renderOptions);
     std::signal(SIGINT, SIG_DFL);
     progress.finish();
-
-    ImageWriter::write(result.film, output);
-
-    if (result.interrupted) {
-        std::cerr << "lancer: interrupted; the part rendered so far was written to "
-                  << output.string() << '\n';
-        return kExitInterrupted;
-    }
-    if (options.stats) printStatistics(scene);
-    if (!options.quiet)
-        std::cerr << "lancer: " << output.string() << ": " << settings.width << "x"
-                  << settings.height << ", " << settings.samplesPerPixel << " spp, "
-                  << result.threads << " threads, " << describeRate(result.rays, result.seconds)
-                  << '\n';
-    return 0;
+    return deliver(result);
 }
 
 }  // namespace
@@ -205,6 +280,10 @@ int main(int argc, char** argv) {
     app.add_flag("--quiet", options.quiet, "No progress bar or summary, only errors");
     app.add_flag("--stats", options.stats,
                  "Print scene statistics: objects, triangles, memory per triangle");
+    app.add_option("--save-radiosity", options.saveRadiosity,
+                   "Radiosity: save the solution to FILE, for other views of the same scene");
+    app.add_option("--load-radiosity", options.loadRadiosity,
+                   "Radiosity: use the solution saved in FILE instead of solving again");
 
     try {
         app.parse(argc, argv);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstdint>
 
 #include "geometry/Ray.h"
 #include "math/Vec2.h"
@@ -24,7 +25,11 @@ struct Hit {
     // How uv changes from this pixel to the next one right (x) and down (y): the footprint that
     // texture filtering averages over. Zero when unknown (point sampling).
     float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
+    // The shape of the scene that was hit: an instance rather than the shape it places.
     const Shape* shape = nullptr;
+    // Which triangle of a mesh was hit (0 for shapes that are one primitive): with `shape`, it
+    // names an emissive face's light.
+    std::uint32_t primitive = 0;
     const Material* material = nullptr;
 
     // Sets the uv footprint from the footprint of a pixel on the surface, dpdx and dpdy (how p

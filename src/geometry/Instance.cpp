@@ -54,6 +54,7 @@ bool Instance::intersect(const Ray& ray, float tMax, Hit& hit) const {
     hit.dpdu = objectToWorld_.applyVector(hit.dpdu);
     hit.dpdv = objectToWorld_.applyVector(hit.dpdv);
     if (material()) hit.material = material();
+    hit.shape = this;
     return true;
 }
 

@@ -22,6 +22,9 @@ public:
     bool emitsOnBothSides() const override { return shape_->emitsOnBothSides(); }
     bool hasTransmissiveMaterial() const override;
 
+    const Shape& placedShape() const { return *shape_; }
+    const Transform& objectToWorld() const { return objectToWorld_; }
+
 private:
     // The ray in the shape's space, and the shift of its parameter t (see intersect).
     Ray toObject(const Ray& ray, float& shift) const;

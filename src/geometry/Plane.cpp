@@ -45,6 +45,7 @@ bool Plane::intersect(const Ray& ray, float tMax, Hit& hit) const {
     hit.dpdv = dpdv_;
     hit.uv = {p[uAxis_], p[vAxis_]};
     hit.shape = this;
+    hit.primitive = 0;
     hit.material = material();
     return true;
 }

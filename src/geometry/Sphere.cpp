@@ -51,6 +51,7 @@ bool Sphere::intersect(const Ray& ray, float tMax, Hit& hit) const {
     if (phi < 0) phi += 2 * kPi;
     hit.uv = {phi / (2 * kPi), 0.5f + std::asin(clamp(n.y, -1.0f, 1.0f)) / kPi};
     hit.shape = this;
+    hit.primitive = 0;
     hit.material = material();
     return true;
 }

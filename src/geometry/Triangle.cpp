@@ -35,6 +35,12 @@ float Triangle::area() const {
     return 0.5f * length(cross(p[v[1]] - p[v[0]], p[v[2]] - p[v[0]]));
 }
 
+std::array<Vec3, 3> Triangle::vertices() const {
+    const std::uint32_t* v = &mesh_->indices[3 * std::size_t{index_}];
+    const std::vector<Vec3>& p = mesh_->positions;
+    return {p[v[0]], p[v[1]], p[v[2]]};
+}
+
 Bounds3 Triangle::bounds() const {
     const std::uint32_t* v = &mesh_->indices[3 * std::size_t{index_}];
     const std::vector<Vec3>& p = mesh_->positions;
@@ -69,6 +75,7 @@ void Triangle::fillHit(const TriangleMesh& mesh, std::uint32_t index,
     const float b0 = at.b0, b1 = at.b1, b2 = at.b2;
 
     hit.t = at.t;
+    hit.primitive = index;
     hit.p = b0 * p0 + b1 * p1 + b2 * p2;
     hit.pError = gamma(7) * (abs(b0 * p0) + abs(b1 * p1) + abs(b2 * p2));
     hit.ng = normalize(cross(p1 - p0, p2 - p0));

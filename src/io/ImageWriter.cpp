@@ -11,7 +11,6 @@
 #include <system_error>
 
 #include "io/FreeImageSupport.h"
-#include "math/Float.h"
 #include "math/Srgb.h"
 
 namespace lancer {
@@ -62,22 +61,16 @@ FreeImageBitmap toLinearBitmap(const Film& film) {
     return bitmap;
 }
 
-BYTE encode8(float linear) {
-    const float v = linearToSrgb(clamp(linear, 0.0f, 1.0f));
-    return static_cast<BYTE>(std::lround(v * 255.0f));
-}
-
 FreeImageBitmap toSrgbBitmap(const Film& film) {
     FreeImageBitmap bitmap(FreeImage_Allocate(film.width(), film.height(), 24));
     if (!bitmap) return bitmap;
     for (int y = 0; y < film.height(); ++y) {
         BYTE* row = FreeImage_GetScanLine(bitmap.get(), film.height() - 1 - y);
         for (int x = 0; x < film.width(); ++x, row += 3) {
-            // NaN radiance (which should never happen) is written as black rather than as garbage.
             const Color& c = film.pixel(x, y);
-            row[FI_RGBA_RED] = encode8(std::isnan(c.r) ? 0 : c.r);
-            row[FI_RGBA_GREEN] = encode8(std::isnan(c.g) ? 0 : c.g);
-            row[FI_RGBA_BLUE] = encode8(std::isnan(c.b) ? 0 : c.b);
+            row[FI_RGBA_RED] = linearToSrgb8(c.r);
+            row[FI_RGBA_GREEN] = linearToSrgb8(c.g);
+            row[FI_RGBA_BLUE] = linearToSrgb8(c.b);
         }
     }
     return bitmap;

@@ -36,6 +36,20 @@ public:
     // The total power (flux) the light emits, for choosing lights in proportion to it. Lights at
     // infinity need the radius of a sphere bounding the scene.
     virtual Color power(float sceneRadius) const = 0;
+
+    // How many samples of the light the Whitted integrator averages per shading point (its soft
+    // shadows); 1 for delta lights.
+    int shadowSamples() const { return shadowSamples_; }
+    void setShadowSamples(int count) { shadowSamples_ = count; }
+
+protected:
+    // The solid-angle density of a point picked with density 1 / area over a surface, seen from
+    // distance sqrt(distanceSquared) at cosine cosLight to the surface's normal:
+    // d^2 / (area |cosLight|), or 0 where the surface is seen edge-on.
+    static float areaToSolidAngleDensity(float area, float distanceSquared, float cosLight);
+
+private:
+    int shadowSamples_ = 1;
 };
 
 }  // namespace lancer

@@ -1,5 +1,6 @@
 #include "render/Renderer.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <mutex>
@@ -13,95 +14,130 @@
 namespace lancer {
 
 Renderer::Renderer(const Scene& scene, const Integrator& integrator)
-    : scene_(scene), integrator_(integrator) {}
+    : scene_(scene), integrator_(integrator), pixelEstimator_(scene, integrator) {}
 
-Color Renderer::renderPixel(int x, int y, std::uint64_t seed, std::uint64_t& rayCount) const {
+Color Renderer::previewSample(const PixelWindow& block, std::uint64_t seed,
+                              std::uint64_t& rayCount) const {
     const RenderSettings& settings = scene_.settings();
-    const int spp = settings.samplesPerPixel;
-    Sampler sampler(seed, x, y, spp);
-    // Each of n samples covers about 1/sqrt(n) of the pixel's width; the floor keeps some
-    // texture filtering at very high sample counts (as pbrt does).
-    const float pixelSpread = scene_.camera().pixelSpreadAngle(settings.height) *
-                              std::max(0.125f, 1 / std::sqrt(static_cast<float>(spp)));
-    Color sum;
-    for (int s = 0; s < spp; ++s) {
-        sampler.startSample(s);
-        // One sample goes through the pixel centre, as a classic ray tracer's; more are stratified
-        // over the pixel's area.
-        const Vec2 offset = spp == 1 ? Vec2(0.5f, 0.5f) : sampler.get2D();
-        const Vec2 lens = sampler.get2D();
-        const Ray ray = scene_.camera().generateRay(static_cast<float>(x) + offset.x,
-                                                    static_cast<float>(y) + offset.y,
-                                                    settings.width, settings.height, lens);
-        sum += integrator_.radiance(ray, pixelSpread, sampler, rayCount);
-    }
-    return sum / static_cast<float>(spp);
+    Sampler sampler(seed, block.x0, block.y0);
+    sampler.startSample(0);
+    const Ray ray = scene_.camera().generateRay(0.5f * static_cast<float>(block.x0 + block.x1),
+                                                0.5f * static_cast<float>(block.y0 + block.y1),
+                                                settings.width, settings.height, Vec2(0.5f, 0.5f));
+    // The ray stands for the whole block: textures are filtered over the block's footprint.
+    const float blockSpread = scene_.camera().pixelSpreadAngle(settings.height) *
+                              static_cast<float>(std::max(block.width(), block.height()));
+    return integrator_.radiance(ray, blockSpread, sampler, rayCount);
 }
+
+namespace {
+
+// `window` cut into tiles of at most size x size pixels, row by row.
+std::vector<PixelWindow> cutIntoTiles(const PixelWindow& window, int size) {
+    std::vector<PixelWindow> tiles;
+    for (int y = window.y0; y < window.y1; y += size)
+        for (int x = window.x0; x < window.x1; x += size)
+            tiles.push_back({x, y, std::min(x + size, window.x1), std::min(y + size, window.y1)});
+    return tiles;
+}
+
+// Runs renderTile(tile, counters) for every tile on `threadCount` threads, each taking the next
+// tile until none is left; renderTile returns false when it stopped early (cancelled), which
+// stops its thread. Returns the counts of all the threads.
+template <typename RenderTile>
+RenderCounters renderTilesInParallel(const std::vector<PixelWindow>& tiles, int threadCount,
+                                     const RenderTile& renderTile) {
+    std::atomic<std::size_t> nextTile{0};
+    std::mutex totalMutex;
+    RenderCounters total;
+    const auto worker = [&] {
+        // Counted locally and added once: per-thread counters side by side in one array would
+        // share a cache line that every ray writes to.
+        RenderCounters counters;
+        for (std::size_t t; (t = nextTile.fetch_add(1)) < tiles.size();)
+            if (!renderTile(tiles[t], counters)) break;
+        std::lock_guard lock(totalMutex);
+        total += counters;
+    };
+    std::vector<std::thread> pool;
+    for (int i = 1; i < threadCount; ++i)
+        pool.emplace_back(worker);
+    worker();
+    for (auto& thread : pool)
+        thread.join();
+    return total;
+}
+
+}  // namespace
 
 RenderResult Renderer::render(const RenderOptions& options) const {
     const auto start = std::chrono::steady_clock::now();
     const RenderSettings& settings = scene_.settings();
     const PixelWindow window =
         options.crop.value_or(PixelWindow{0, 0, settings.width, settings.height});
-
-    std::vector<PixelWindow> tiles;
-    for (int y = window.y0; y < window.y1; y += kTileSize)
-        for (int x = window.x0; x < window.x1; x += kTileSize)
-            tiles.push_back(
-                {x, y, std::min(x + kTileSize, window.x1), std::min(y + kTileSize, window.y1)});
+    const std::vector<PixelWindow> tiles = cutIntoTiles(window, kTileSize);
 
     RenderResult result{Film(settings.width, settings.height)};
     result.threads = options.threads > 0
                          ? options.threads
                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
 
-    std::atomic<std::size_t> nextTile{0};
-    std::atomic<bool> interrupted{false};
-    std::mutex progressMutex;
+    std::mutex reportMutex;
     int tilesDone = 0;
-    std::vector<std::uint64_t> raysPerThread(static_cast<std::size_t>(result.threads), 0);
+    const int tilesTotal = static_cast<int>(tiles.size());
     const auto cancelled = [&] {
         return options.cancel && options.cancel->load(std::memory_order_relaxed);
     };
+    const auto report = [&](const Film& film, const PixelWindow& tile, bool preview) {
+        std::lock_guard lock(reportMutex);
+        if (!preview) ++tilesDone;
+        if (options.onTileDone) options.onTileDone({film, tile, preview, tilesDone, tilesTotal});
+    };
 
-    const auto worker = [&](std::size_t threadIndex) {
-        std::vector<Color> tilePixels(static_cast<std::size_t>(kTileSize * kTileSize));
-        std::uint64_t& rays = raysPerThread[threadIndex];
-        for (std::size_t t; (t = nextTile.fetch_add(1)) < tiles.size();) {
-            const PixelWindow& tile = tiles[t];
+    // Each preview pass ends before the next begins, so that a coarser block never lands on a
+    // finer one. Their pixels go to a film of their own: an interrupted render's image holds
+    // finished tiles only.
+    if (!options.previewBlockSizes.empty()) {
+        Film preview(settings.width, settings.height);
+        for (const int blockSize : options.previewBlockSizes) {
+            result.counters += renderTilesInParallel(
+                cutIntoTiles(window, kTileSize * blockSize), result.threads,
+                [&](const PixelWindow& tile, RenderCounters& counters) {
+                    for (const PixelWindow& block : cutIntoTiles(tile, blockSize)) {
+                        if (cancelled()) return false;
+                        const Color c = previewSample(block, options.seed, counters.rays);
+                        for (int y = block.y0; y < block.y1; ++y)
+                            for (int x = block.x0; x < block.x1; ++x)
+                                preview.setPixel(x, y, c);
+                    }
+                    report(preview, tile, true);
+                    return true;
+                });
+        }
+    }
+
+    result.counters += renderTilesInParallel(
+        tiles, result.threads, [&](const PixelWindow& tile, RenderCounters& counters) {
             // Pixels go to the film only once their tile is complete, so that an interrupted
             // render holds whole tiles.
+            std::vector<Color> tilePixels(static_cast<std::size_t>(tile.width() * tile.height()));
             for (int y = tile.y0; y < tile.y1; ++y) {
-                if (cancelled()) {
-                    interrupted = true;
-                    return;
-                }
+                if (cancelled()) return false;
                 for (int x = tile.x0; x < tile.x1; ++x)
-                    tilePixels[static_cast<std::size_t>((y - tile.y0) * kTileSize +
+                    tilePixels[static_cast<std::size_t>((y - tile.y0) * tile.width() +
                                                         (x - tile.x0))] =
-                        renderPixel(x, y, options.seed, rays);
+                        pixelEstimator_.estimate(x, y, options.seed, counters);
             }
             for (int y = tile.y0; y < tile.y1; ++y)
                 for (int x = tile.x0; x < tile.x1; ++x)
                     result.film.setPixel(x, y,
                                          tilePixels[static_cast<std::size_t>(
-                                             (y - tile.y0) * kTileSize + (x - tile.x0))]);
-            std::lock_guard lock(progressMutex);
-            ++tilesDone;
-            if (options.onTileDone) options.onTileDone(tilesDone, static_cast<int>(tiles.size()));
-        }
-    };
+                                             (y - tile.y0) * tile.width() + (x - tile.x0))]);
+            report(result.film, tile, false);
+            return true;
+        });
 
-    std::vector<std::thread> pool;
-    for (std::size_t i = 1; i < raysPerThread.size(); ++i)
-        pool.emplace_back(worker, i);
-    worker(0);
-    for (auto& thread : pool)
-        thread.join();
-
-    for (std::uint64_t rays : raysPerThread)
-        result.rays += rays;
-    result.interrupted = interrupted || cancelled();
+    result.interrupted = tilesDone < tilesTotal;
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -4,8 +4,11 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "render/Film.h"
+#include "render/PixelEstimator.h"
+#include "render/RenderCounters.h"
 
 namespace lancer {
 
@@ -20,18 +23,33 @@ struct PixelWindow {
     int height() const { return y1 - y0; }
 };
 
+// A tile just finished, as reported to RenderOptions::onTileDone.
+struct FinishedTile {
+    const Film& film;  // holds the tile's pixels; read them during the call only
+    PixelWindow tile;
+    bool preview;       // a coarse pass's stand-in pixels (in a film of their own), not the image's
+    int tilesDone = 0;  // the image's tiles finished so far (previews not counted)
+    int tilesTotal = 0;  // the image's tiles
+};
+
 struct RenderOptions {
-    int threads = 0;                                                // 0: all cores
-    std::uint64_t seed = 0;                                         // selects the sample patterns
-    std::optional<PixelWindow> crop;                                // render only these pixels
-    const std::atomic<bool>* cancel = nullptr;                      // set to stop the workers early
-    std::function<void(int tilesDone, int tilesTotal)> onTileDone;  // called under a lock
+    int threads = 0;                            // 0: all cores
+    std::uint64_t seed = 0;                     // selects the sample patterns
+    std::optional<PixelWindow> crop;            // render only these pixels
+    const std::atomic<bool>* cancel = nullptr;  // set to stop the workers early
+    // Coarse passes before the image, for a live view: a pass of block size k traces one ray
+    // through the centre of each k x k block and fills the block with it. None by default; they
+    // never change the image.
+    std::vector<int> previewBlockSizes;
+    // Called under a lock after each tile, preview tiles included, in the order they finish;
+    // every tile of a pass is reported before any of the next pass.
+    std::function<void(const FinishedTile&)> onTileDone;
 };
 
 struct RenderResult {
     Film film;
-    bool interrupted = false;  // cancelled: only the tiles finished before are in the film
-    std::uint64_t rays = 0;    // every ray traced: camera, shadow and secondary
+    bool interrupted = false;   // cancelled: only the tiles finished before are in the film
+    RenderCounters counters{};  // rays traced, samples taken, NaN or infinite samples dropped
     double seconds = 0;
     int threads = 0;
 };
@@ -48,10 +66,13 @@ public:
     static constexpr int kTileSize = 16;
 
 private:
-    Color renderPixel(int x, int y, std::uint64_t seed, std::uint64_t& rayCount) const;
+    // The preview's one ray for a block of pixels.
+    Color previewSample(const PixelWindow& block, std::uint64_t seed,
+                        std::uint64_t& rayCount) const;
 
     const Scene& scene_;
     const Integrator& integrator_;
+    PixelEstimator pixelEstimator_;  // the image's pixels
 };
 
 }  // namespace lancer

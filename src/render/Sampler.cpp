@@ -1,118 +1,94 @@
 #include "render/Sampler.h"
 
-#include <algorithm>
-#include <cmath>
+#include <array>
 
-#include "math/Float.h"
 #include "render/Sampling.h"
 
 namespace lancer {
 
 namespace {
 
-// A pseudo-random permutation of [0, size) selected by `pattern`: a hash that is a bijection on
-// the enclosing power of two, applied until the value falls inside the range ("cycle walking").
-std::uint32_t permute(std::uint32_t i, std::uint32_t size, std::uint32_t pattern) {
-    std::uint32_t mask = size - 1;
-    mask |= mask >> 1;
-    mask |= mask >> 2;
-    mask |= mask >> 4;
-    mask |= mask >> 8;
-    mask |= mask >> 16;
-    do {
-        i ^= pattern;
-        i *= 0xe170893d;
-        i ^= pattern >> 16;
-        i ^= (i & mask) >> 4;
-        i ^= pattern >> 8;
-        i *= 0x0929eb3f;
-        i ^= pattern >> 23;
-        i ^= (i & mask) >> 1;
-        i *= 1 | pattern >> 27;
-        i *= 0x6935fa69;
-        i ^= (i & mask) >> 11;
-        i *= 0x74dcb303;
-        i ^= (i & mask) >> 2;
-        i *= 0x9e501cc3;
-        i ^= (i & mask) >> 2;
-        i *= 0xc860a3df;
-        i &= mask;
-        i ^= i >> 5;
-    } while (i >= size);
-    return (i + pattern) % size;
+std::uint32_t reverseBits(std::uint32_t v) {
+    v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+    v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+    v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+    v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+    return (v >> 16) | (v << 16);
 }
 
-// A hashed float in [0, 1) for index i under `pattern`.
-float hashedFloat(std::uint32_t i, std::uint32_t pattern) {
-    i ^= pattern;
-    i ^= i >> 17;
-    i ^= i >> 10;
-    i *= 0xb36534e5;
-    i ^= i >> 12;
-    i ^= i >> 21;
-    i *= 0x93fc4795;
-    i ^= 0xdf6e307f;
-    i ^= i >> 17;
-    i *= 1 | pattern >> 18;
-    // The top 24 bits, so that the result is exactly representable and strictly below 1.
-    return static_cast<float>(i >> 8) * 0x1p-24f;
+// A bijection of 32-bit words in which each bit changes only as a function of the bits below it
+// (additions, odd multiplications and x ^= x * even all carry upwards only): on bit-reversed
+// values it is a nested uniform (Owen) scramble. Laine and Karras's hash as improved by Vegdahl
+// (2021, "Building a better LK hash").
+std::uint32_t laineKarrasPermutation(std::uint32_t x, std::uint32_t seed) {
+    x ^= x * 0x3d20adeau;
+    x += seed;
+    x *= (seed >> 16) | 1u;
+    x ^= x * 0x05526c56u;
+    x ^= x * 0x53a22864u;
+    return x;
 }
 
-// Moves u, computed as (stratum + jitter) / strata in float, back into its stratum
-// [stratum / strata, (stratum + 1) / strata): with a jitter close to 1 the rounding of the sum or
-// of the quotient can land on the next stratum's edge (which also reaches 1 at the top), and
-// with a jitter of 0 below an edge that is not a float. Exact tests: u * strata fits a double.
-float keepInStratum(float u, std::uint32_t stratum, std::uint32_t strata) {
-    while (static_cast<double>(u) * strata >= stratum + 1.0)
-        u = nextFloatDown(u);
-    while (static_cast<double>(u) * strata < stratum)
-        u = nextFloatUp(u);
-    return u;
+// Owen scrambling of a 0.32 fixed-point value: bit i (from the top) is flipped as a hash of the
+// bits above it, which keeps every elementary interval's points inside one elementary interval.
+std::uint32_t nestedUniformScramble(std::uint32_t x, std::uint32_t seed) {
+    return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
+}
+
+// Generator matrix columns of Sobol's second dimension (primitive polynomial x + 1): Pascal's
+// triangle mod 2, v_k = v_(k-1) ^ (v_(k-1) >> 1). The first dimension is the bit reversal of the
+// index (van der Corput).
+constexpr std::array<std::uint32_t, 32> kSobolDimension1 = [] {
+    std::array<std::uint32_t, 32> v{};
+    v[0] = 0x80000000u;
+    for (std::size_t k = 1; k < v.size(); ++k)
+        v[k] = v[k - 1] ^ (v[k - 1] >> 1);
+    return v;
+}();
+
+std::uint32_t sobolDimension1(std::uint32_t index) {
+    std::uint32_t x = 0;
+    for (std::size_t k = 0; index != 0; index >>= 1, ++k)
+        if (index & 1u) x ^= kSobolDimension1[k];
+    return x;
+}
+
+// The top 24 bits as a float in [0,1): exact, so truncation keeps every point in the elementary
+// interval its bits say (rounding all 32 bits could carry it onto the next interval's edge, or 1).
+float toUnitFloat(std::uint32_t x) {
+    return static_cast<float>(x >> 8) * 0x1p-24f;
 }
 
 }  // namespace
 
-Sampler::Sampler(std::uint64_t seed, int pixelX, int pixelY, int samplesPerPixel)
-    : pixelSeed_(hashValues(seed, pixelX, pixelY)), samplesPerPixel_(samplesPerPixel) {}
+Sampler::Sampler(std::uint64_t seed, int pixelX, int pixelY)
+    : pixelSeed_(hashValues(seed, pixelX, pixelY)) {}
 
 void Sampler::startSample(int index) {
-    sampleIndex_ = index;
+    sampleIndex_ = static_cast<std::uint32_t>(index);
     dimension_ = 0;
 }
 
-std::uint32_t Sampler::patternFor(int dimension) const {
-    return static_cast<std::uint32_t>(hashValues(pixelSeed_, dimension));
+std::uint64_t Sampler::requestSeed() {
+    return hashValues(pixelSeed_, dimension_++);
 }
 
 Vec2 Sampler::get2D() {
-    const std::uint32_t pattern = patternFor(dimension_++);
-    const auto count = static_cast<std::uint32_t>(samplesPerPixel_);
-    // An m x n grid with m * n >= count, as square as possible.
-    const auto m = static_cast<std::uint32_t>(std::ceil(std::sqrt(static_cast<double>(count))));
-    const std::uint32_t n = (count + m - 1) / m;
-    const std::uint32_t s =
-        permute(static_cast<std::uint32_t>(sampleIndex_), count, pattern * 0x51633e2d);
-    const std::uint32_t sx = permute(s % m, m, pattern * 0xa511e9b3);
-    const std::uint32_t sy = permute(s / m, n, pattern * 0x63d83595);
-    const float jx = hashedFloat(s, pattern * 0xa399d265);
-    const float jy = hashedFloat(s, pattern * 0x711ad6a5);
-    const float x =
-        (static_cast<float>(s % m) + (static_cast<float>(sy) + jx) / static_cast<float>(n)) /
-        static_cast<float>(m);
-    const float y =
-        (static_cast<float>(s / m) + (static_cast<float>(sx) + jy) / static_cast<float>(m)) /
-        static_cast<float>(n);
-    // x lies in stratum (s % m) n + sy of the m n columns, y in (s / m) m + sx of the rows.
-    return {keepInStratum(x, (s % m) * n + sy, m * n), keepInStratum(y, (s / m) * m + sx, m * n)};
+    const std::uint64_t seed = requestSeed();
+    const auto seedOf = [&](int part) {
+        return static_cast<std::uint32_t>(hashValues(seed, part));
+    };
+    const std::uint32_t index = nestedUniformScramble(sampleIndex_, seedOf(0));
+    return {toUnitFloat(nestedUniformScramble(reverseBits(index), seedOf(1))),
+            toUnitFloat(nestedUniformScramble(sobolDimension1(index), seedOf(2)))};
 }
 
 float Sampler::get1D() {
-    const std::uint32_t pattern = patternFor(dimension_++);
-    const auto count = static_cast<std::uint32_t>(samplesPerPixel_);
-    const std::uint32_t stratum = permute(static_cast<std::uint32_t>(sampleIndex_), count, pattern);
-    const float u = (static_cast<float>(stratum) + hashedFloat(stratum, pattern * 0x68bc21eb)) /
-                    static_cast<float>(count);
-    return keepInStratum(u, stratum, count);
+    const std::uint64_t seed = requestSeed();
+    const auto low = static_cast<std::uint32_t>(seed),
+               high = static_cast<std::uint32_t>(seed >> 32);
+    return toUnitFloat(
+        nestedUniformScramble(reverseBits(nestedUniformScramble(sampleIndex_, low)), high));
 }
 
 }  // namespace lancer

@@ -1,10 +1,12 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
 #include "math/Float.h"
 #include "math/Vec2.h"
+#include "math/Vec3.h"
 
 namespace lancer {
 
@@ -21,6 +23,13 @@ inline Vec2 sampleUniformDiskConcentric(const Vec2& u) {
         theta = kPi / 2 - (kPi / 4) * (offset.x / offset.y);
     }
     return r * Vec2(std::cos(theta), std::sin(theta));
+}
+
+// A direction in the hemisphere around +z with density cos(theta) / pi (Malley's method: a point
+// of the unit disc lifted onto the hemisphere).
+inline Vec3 sampleCosineHemisphere(const Vec2& u) {
+    const Vec2 d = sampleUniformDiskConcentric(u);
+    return {d.x, d.y, std::sqrt(std::max(0.0f, 1 - d.x * d.x - d.y * d.y))};
 }
 
 // A 64-bit hash of several integers (the SplitMix64 finaliser, chained): turns (seed, pixel,

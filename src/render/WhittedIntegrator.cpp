@@ -1,10 +1,13 @@
 #include "render/WhittedIntegrator.h"
 
+#include <algorithm>
+#include <bit>
 #include <cmath>
 
 #include "materials/Material.h"
 #include "materials/Optics.h"
 #include "render/Sampler.h"
+#include "render/Sampling.h"
 #include "scene/Scene.h"
 
 namespace lancer {
@@ -52,8 +55,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
 
     Color L;
     if (front || hit.shape->emitsOnBothSides()) L += material.emission;
-    L += material.ambient->evaluate(hit) * scene_.ambient();
-    L += directLighting(hit, n, wo, sampler, rayCount);
+    L += localShading(hit, n, wo, sampler, rayCount);
 
     if (depth >= maxDepth_) return L;
 
@@ -77,23 +79,67 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     return L;
 }
 
+namespace {
+
+// Point k of `count` points over the unit square, one per cell of a jittered grid of about
+// sqrt(count) x sqrt(count) cells (the last row's cells widened so that the cells tile the
+// square), the whole pattern shifted by `offset` with wrap-around. Under a uniformly random
+// offset every point is uniform over the square, so the average over the points is unbiased
+// whatever the jitter; the grid keeps them spread out. The jitter is a hash of (jitterSeed, k).
+Vec2 stratifiedPoint(int k, int count, const Vec2& offset, std::uint64_t jitterSeed) {
+    const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
+    const int rows = (count + columns - 1) / columns;
+    const int row = k / columns;
+    const int cellsInRow = row < rows - 1 ? columns : count - (rows - 1) * columns;
+    const std::uint64_t bits = hashValues(jitterSeed, k);
+    const float jitterX = static_cast<float>(bits >> 40) * 0x1p-24f;
+    const float jitterY = static_cast<float>(bits & 0xffffff) * 0x1p-24f;
+    // Below 2, so one subtraction (exact in [1, 2)) brings it back into [0, 1).
+    const auto wrap = [](float x) { return x >= 1 ? x - 1 : x; };
+    return {wrap((static_cast<float>(k % columns) + jitterX) / static_cast<float>(cellsInRow) +
+                 offset.x),
+            wrap((static_cast<float>(row) + jitterY) / static_cast<float>(rows) + offset.y)};
+}
+
+}  // namespace
+
+Color WhittedIntegrator::localShading(const Hit& hit, const Vec3& n, const Vec3& wo,
+                                      Sampler& sampler, std::uint64_t& rayCount) const {
+    return hit.material->ambient->evaluate(hit) * scene_.ambient() +
+           directLighting(hit, n, wo, sampler, rayCount);
+}
+
 Color WhittedIntegrator::directLighting(const Hit& hit, const Vec3& n, const Vec3& wo,
                                         Sampler& sampler, std::uint64_t& rayCount) const {
     const Material& material = *hit.material;
     const Color kd = material.diffuse->evaluate(hit);
-    Color L;
-    for (const auto& light : scene_.lights()) {
-        const Vec2 u = light->isDelta() ? Vec2(0.5f, 0.5f) : sampler.get2D();
-        const LightSample ls = light->sample(hit.p, u);
+    // V_l E_l (kd max(0, n.L) + ks max(0, n.h)^n [n.L > 0]) for one sample of a light.
+    const auto shade = [&](const LightSample& ls) {
         const float cosTheta = dot(n, ls.wi);
-        if (cosTheta <= 0) continue;  // both terms vanish when the light is behind the surface
+        if (cosTheta <= 0) return Color(0);  // both terms vanish when the light is behind
         const Vec3 h = normalize(ls.wi + wo);
         const Color brdfCos =
             kd * cosTheta +
             material.specular * std::pow(std::max(0.0f, dot(n, h)), material.shininess);
-        if (brdfCos.isBlack() || ls.irradiance.isBlack()) continue;
-        const Color visibility = scene_.transmittance(hit, ls, rayCount);
-        L += visibility * ls.irradiance * brdfCos;
+        if (brdfCos.isBlack() || ls.irradiance.isBlack()) return Color(0);
+        return scene_.transmittance(hit, ls, rayCount) * ls.irradiance * brdfCos;
+    };
+    Color L;
+    for (const auto& light : scene_.lights()) {
+        if (light->isDelta()) {
+            L += shade(light->sample(hit.p, Vec2(0.5f, 0.5f)));
+            continue;
+        }
+        // An area light: the average over its shadow samples, stratified over the light, with a
+        // fresh offset (and jitter) at every hit from the sampler.
+        const int count = light->shadowSamples();
+        const Vec2 offset = sampler.get2D();
+        const std::uint64_t jitterSeed = hashValues(std::bit_cast<std::uint32_t>(offset.x),
+                                                    std::bit_cast<std::uint32_t>(offset.y));
+        Color sum;
+        for (int k = 0; k < count; ++k)
+            sum += shade(light->sample(hit.p, stratifiedPoint(k, count, offset, jitterSeed)));
+        L += sum / static_cast<float>(count);
     }
     return L;
 }

@@ -9,13 +9,22 @@ struct Hit;
 
 // Whitted ray tracing with the scene format's shading equation: emission, ambient, Blinn-Phong
 // direct lighting with shadow rays, and recursive mirror reflection and refraction (weights split
-// by the Fresnel term for transmissive materials) up to maxDepth bounces.
-class WhittedIntegrator final : public Integrator {
+// by the Fresnel term for transmissive materials) up to maxDepth bounces. Subclasses may replace
+// the local shading (ambient and direct lighting) and keep the rest (radiosity does).
+class WhittedIntegrator : public Integrator {
 public:
     WhittedIntegrator(const Scene& scene, int maxDepth);
 
     Color radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
                    std::uint64_t& rayCount) const override;
+
+protected:
+    // The light a surface reflects towards wo besides emission, reflection and refraction:
+    // ambient and Blinn-Phong direct lighting. n is the shading normal on wo's side.
+    virtual Color localShading(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,
+                               std::uint64_t& rayCount) const;
+
+    const Scene& scene() const { return scene_; }
 
 private:
     // A ray of the path from the camera, with what texture filtering needs to know of the path:

@@ -9,6 +9,9 @@ namespace lancer {
 Camera::Camera(const Vec3& position, const Vec3& lookAt, const Vec3& up, float vfovDegrees,
                float aperture, float focusDistance)
     : position_(position),
+      lookAt_(lookAt),
+      up_(up),
+      vfovDegrees_(vfovDegrees),
       w_(normalize(position - lookAt)),
       tanHalfVfov_(std::tan(radians(vfovDegrees) / 2)),
       aperture_(aperture),

@@ -23,8 +23,19 @@ public:
         return 2 * tanHalfVfov_ / static_cast<float>(height);
     }
 
+    // The parameters it was made from, to make a moved copy (the window's orbit).
+    const Vec3& position() const { return position_; }
+    const Vec3& lookAt() const { return lookAt_; }
+    const Vec3& up() const { return up_; }
+    float vfovDegrees() const { return vfovDegrees_; }
+    float aperture() const { return aperture_; }
+    float focusDistance() const { return focusDistance_; }
+
 private:
     Vec3 position_;
+    Vec3 lookAt_;
+    Vec3 up_{0, 1, 0};
+    float vfovDegrees_ = 90;
     Vec3 u_, v_, w_;  // right, up, and backwards (w points from the scene towards the camera)
     float tanHalfVfov_ = 1;
     float aperture_ = 0;

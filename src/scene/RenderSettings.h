@@ -1,6 +1,11 @@
 #pragma once
 
+#include <optional>
 #include <string>
+
+#include "radiosity/RadiositySettings.h"
+#include "render/AdaptiveSettings.h"
+#include "render/FilterSettings.h"
 
 namespace lancer {
 
@@ -8,9 +13,12 @@ namespace lancer {
 struct RenderSettings {
     int width = 640;
     int height = 480;
-    int samplesPerPixel = 16;
+    int samplesPerPixel = 16;  // with adaptive sampling, the most a pixel may take
     int maxDepth = 5;
     std::string integrator = "whitted";
+    FilterSettings filter;                     // the reconstruction filter
+    std::optional<AdaptiveSettings> adaptive;  // none: every pixel takes samplesPerPixel
+    RadiositySettings radiosity;               // the top-level "radiosity" block
 };
 
 }  // namespace lancer

@@ -47,12 +47,17 @@ public:
     void buildAccelerationStructure();
 
     const std::vector<std::unique_ptr<Light>>& lights() const { return lights_; }
+    // The infinite shapes (planes), outside the BVH: radiosity meshes them too.
+    const std::vector<std::unique_ptr<Shape>>& unboundedShapes() const { return unboundedShapes_; }
 
     Statistics& statistics() { return statistics_; }
     const Statistics& statistics() const { return statistics_; }
     std::size_t boundedShapeCount() const { return boundedShapes_.size(); }
     std::size_t unboundedShapeCount() const { return unboundedShapes_.size(); }
     std::size_t accelerationStructureBytes() const { return bvh_.memoryBytes(); }
+    // The shapes in the BVH (all but infinite planes), and the box they fit in.
+    const std::vector<std::unique_ptr<Shape>>& boundedShapes() const { return boundedShapes_; }
+    Bounds3 bounds() const { return bvh_.bounds(); }
 
     // The nearest hit with 0 < t < tMax, if any.
     bool intersect(const Ray& ray, float tMax, Hit& hit) const;

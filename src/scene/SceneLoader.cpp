@@ -8,14 +8,19 @@
 #include "geometry/Instance.h"
 #include "geometry/Mesh.h"
 #include "geometry/Plane.h"
+#include "geometry/Quad.h"
 #include "geometry/Sphere.h"
 #include "geometry/Triangle.h"
 #include "io/ObjLoader.h"
 #include "lights/DirectionalLight.h"
 #include "lights/PointLight.h"
+#include "lights/QuadLight.h"
+#include "lights/SphereLight.h"
+#include "lights/SpotLight.h"
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
 #include "materials/ImageTexture.h"
+#include "render/Filter.h"
 #include "scene/DidYouMean.h"
 
 namespace lancer {
@@ -75,10 +80,12 @@ Scene SceneLoader::load() {
     const Node root{doc_.root(), "", "the scene"};
     requireObject(root, "the scene");
     checkKeys(root, "the scene",
-              {"render", "camera", "background", "ambient", "materials", "objects", "lights"});
+              {"render", "camera", "background", "ambient", "materials", "objects", "lights",
+               "radiosity"});
 
     defaultMaterial_ = scene_.addMaterial(std::make_unique<Material>());
     if (root.has("render")) loadRender(root["render"]);
+    if (root.has("radiosity")) loadRadiosity(root["radiosity"]);
     if (!root.has("camera")) fail(root, "the scene has no \"camera\"");
     loadCamera(root["camera"]);
     if (root.has("background")) scene_.setBackground(readColor(root["background"]));
@@ -104,7 +111,8 @@ Scene SceneLoader::load() {
 
 void SceneLoader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
-    checkKeys(node, "\"render\"", {"width", "height", "spp", "max_depth", "integrator"});
+    checkKeys(node, "\"render\"",
+              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive"});
     RenderSettings& settings = scene_.settings();
     if (node.has("width")) settings.width = readInt(node["width"], 1);
     if (node.has("height")) settings.height = readInt(node["height"], 1);
@@ -118,6 +126,88 @@ void SceneLoader::loadRender(const Node& node) {
             fail(integrator, "unknown integrator " + inQuotes(settings.integrator) +
                                  didYouMean(settings.integrator, kIntegrators) +
                                  "; expected \"whitted\", \"path\" or \"radiosity\"");
+    }
+    if (node.has("filter")) loadFilter(node["filter"]);
+    if (node.has("adaptive")) loadAdaptive(node, node["adaptive"]);
+}
+
+void SceneLoader::loadFilter(const Node& node) {
+    FilterSettings& filter = scene_.settings().filter;
+    if (node.value.is_object()) {
+        checkKeys(node, "\"filter\"", {"type", "radius"});
+        if (node.has("radius")) {
+            const Node radius = node["radius"];
+            filter.radius = readNumberAtLeast(radius, 0, false);
+            // Far outside this range the filters' arithmetic under- or overflows.
+            if (*filter.radius < 0.001f || *filter.radius > 32)
+                fail(radius, "\"radius\" must be between 0.001 and 32 pixels");
+        }
+    } else if (!node.value.is_string()) {
+        fail(node, "\"filter\" must be a filter name or {\"type\": NAME, \"radius\": R}, got " +
+                       describe(node.value));
+    }
+    const Node type = node.value.is_object() ? require(node, "type", "\"filter\"") : node;
+    filter.type = readString(type);
+    const std::vector<std::string>& names = Filter::typeNames();
+    if (std::find(names.begin(), names.end(), filter.type) == names.end())
+        fail(type, "unknown filter " + inQuotes(filter.type) + didYouMean(filter.type, names) +
+                       "; expected \"box\", \"tent\", \"gaussian\" or \"mitchell\"");
+}
+
+void SceneLoader::loadAdaptive(const Node& render, const Node& node) {
+    requireObject(node, "\"adaptive\"");
+    checkKeys(node, "\"adaptive\"", {"min_spp", "max_spp", "threshold"});
+    RenderSettings& settings = scene_.settings();
+    AdaptiveSettings adaptive;
+    if (node.has("max_spp")) {
+        // Both would set RenderSettings::samplesPerPixel, the per-pixel budget.
+        if (render.has("spp"))
+            failAtKey(node["max_spp"],
+                      "\"max_spp\" and the render's \"spp\" both set the most samples per "
+                      "pixel; give one of them");
+        settings.samplesPerPixel = readInt(node["max_spp"], 1);
+    }
+    if (node.has("min_spp")) {
+        const Node minSpp = node["min_spp"];
+        adaptive.minSamples = readInt(minSpp, 1);
+        if (adaptive.minSamples > settings.samplesPerPixel)
+            fail(minSpp, "\"min_spp\" (" + std::to_string(adaptive.minSamples) +
+                             ") is more than \"max_spp\" (" +
+                             std::to_string(settings.samplesPerPixel) +
+                             (node.has("max_spp") ? "" : ", the render's \"spp\"") + ")");
+    } else {
+        adaptive.minSamples = std::min(adaptive.minSamples, settings.samplesPerPixel);
+    }
+    if (node.has("threshold")) adaptive.threshold = readNumberAtLeast(node["threshold"], 0, false);
+    settings.adaptive = adaptive;
+}
+
+void SceneLoader::loadRadiosity(const Node& node) {
+    requireObject(node, "\"radiosity\"");
+    checkKeys(node, "\"radiosity\"",
+              {"patch_size", "element_size", "threshold", "max_shots", "subdivision_levels",
+               "subdivision_tolerance", "visibility_rays"});
+    RadiositySettings& r = scene_.settings().radiosity;
+    if (node.has("patch_size")) r.patchSize = readNumberAtLeast(node["patch_size"], 0, false);
+    if (node.has("element_size"))
+        r.elementSize = readNumberAtLeast(node["element_size"], 0, false);
+    if (node.has("threshold")) {
+        r.threshold = readNumberAtLeast(node["threshold"], 0, false);
+        if (r.threshold >= 1) fail(node["threshold"], "\"threshold\" must be below 1");
+    }
+    if (node.has("max_shots")) r.maxShots = readInt(node["max_shots"], 1);
+    if (node.has("subdivision_levels")) {
+        r.subdivisionLevels = readInt(node["subdivision_levels"], 0);
+        // Each level multiplies the elements by up to four.
+        if (r.subdivisionLevels > 8)
+            fail(node["subdivision_levels"], "\"subdivision_levels\" must be at most 8");
+    }
+    if (node.has("subdivision_tolerance"))
+        r.subdivisionTolerance = readNumberAtLeast(node["subdivision_tolerance"], 0, false);
+    if (node.has("visibility_rays")) {
+        r.visibilityRays = readInt(node["visibility_rays"], 1);
+        if (r.visibilityRays > 1024)
+            fail(node["visibility_rays"], "\"visibility_rays\" must be at most 1024");
     }
 }
 
@@ -361,28 +451,107 @@ void SceneLoader::loadLight(const Node& node) {
         checkKeys(node, "a point light", {"type", "position", "intensity", "falloff"});
         const Vec3 position = readVec3(require(node, "position", "a point light"));
         const Color intensity = readColor(require(node, "intensity", "a point light"));
-        bool inverseSquare = true;
-        if (node.has("falloff")) {
-            const std::string falloff = readString(node["falloff"]);
-            if (falloff == "none")
-                inverseSquare = false;
-            else if (falloff != "inverse_square")
-                fail(node["falloff"], "unknown falloff " + inQuotes(falloff) +
-                                          didYouMean(falloff, {"none", "inverse_square"}) +
-                                          "; expected \"inverse_square\" or \"none\"");
-        }
-        scene_.addLight(std::make_unique<PointLight>(position, intensity, inverseSquare));
+        scene_.addLight(
+            std::make_unique<PointLight>(position, intensity, readInverseSquareFalloff(node)));
     } else if (type == "directional") {
         checkKeys(node, "a directional light", {"type", "direction", "irradiance"});
         const Vec3 direction = readDirection(require(node, "direction", "a directional light"));
         const Color irradiance = readColor(require(node, "irradiance", "a directional light"));
         scene_.addLight(std::make_unique<DirectionalLight>(direction, irradiance));
+    } else if (type == "spot") {
+        loadSpotLight(node);
     } else if (type == "quad") {
-        fail(node["type"], "\"quad\" lights are not supported yet");
+        checkKeys(node, "a quad light",
+                  {"type", "corner", "edge1", "edge2", "radiance", "samples"});
+        const Vec3 corner = readVec3(require(node, "corner", "a quad light"));
+        const Vec3 edge1 = readVec3(require(node, "edge1", "a quad light"));
+        const Vec3 edge2 = readVec3(require(node, "edge2", "a quad light"));
+        const auto area = static_cast<float>(length(cross(Vec3d(edge1), Vec3d(edge2))));
+        if (!(area > 0) || !std::isfinite(area))
+            fail(node["edge2"],
+                 "a quad light's \"edge1\" and \"edge2\" must be non-zero and not parallel "
+                 "(the quad has no area)");
+        const Color radiance = readColor(require(node, "radiance", "a quad light"));
+        auto surface = std::make_unique<Quad>(corner, edge1, edge2, emitterOf(radiance));
+        auto light = std::make_unique<QuadLight>(*surface, radiance);
+        addAreaLight(node, std::move(surface), std::move(light));
+    } else if (type == "sphere") {
+        checkKeys(node, "a sphere light", {"type", "center", "radius", "radiance", "samples"});
+        const Vec3 center = readVec3(require(node, "center", "a sphere light"));
+        const float radius = readNumberAtLeast(require(node, "radius", "a sphere light"), 0, false);
+        const Color radiance = readColor(require(node, "radiance", "a sphere light"));
+        auto surface = std::make_unique<Sphere>(center, radius, emitterOf(radiance));
+        auto light = std::make_unique<SphereLight>(*surface, radiance);
+        addAreaLight(node, std::move(surface), std::move(light));
     } else {
-        fail(node["type"], "unknown light type " + inQuotes(type) +
-                               didYouMean(type, {"point", "directional", "quad"}));
+        fail(node["type"],
+             "unknown light type " + inQuotes(type) +
+                 didYouMean(type, {"point", "directional", "spot", "quad", "sphere"}));
     }
+}
+
+bool SceneLoader::readInverseSquareFalloff(const Node& light) const {
+    if (!light.has("falloff")) return true;
+    const std::string falloff = readString(light["falloff"]);
+    if (falloff == "none") return false;
+    if (falloff != "inverse_square")
+        fail(light["falloff"], "unknown falloff " + inQuotes(falloff) +
+                                   didYouMean(falloff, {"none", "inverse_square"}) +
+                                   "; expected \"inverse_square\" or \"none\"");
+    return true;
+}
+
+void SceneLoader::loadSpotLight(const Node& node) {
+    checkKeys(node, "a spot light",
+              {"type", "position", "direction", "look_at", "intensity", "cone_angle",
+               "cone_falloff", "falloff"});
+    const Vec3 position = readVec3(require(node, "position", "a spot light"));
+    Vec3 direction;
+    if (node.has("direction") && node.has("look_at"))
+        fail(node["look_at"], "a spot light takes \"direction\" or \"look_at\", not both");
+    if (node.has("direction")) {
+        direction = readDirection(node["direction"]);
+    } else if (node.has("look_at")) {
+        direction = readVec3(node["look_at"]) - position;
+        if (!(lengthSquared(direction) > 0) || !isFinite(normalize(direction)))
+            fail(node["look_at"], "a spot light's \"look_at\" must differ from its \"position\"");
+    } else {
+        fail(node, "a spot light needs \"direction\" or \"look_at\"");
+    }
+    const Color intensity = readColor(require(node, "intensity", "a spot light"));
+    // pbrt's defaults: a 30 degree cone fading over its outer 5 degrees.
+    float coneAngle = 30;
+    if (node.has("cone_angle")) {
+        coneAngle = readNumberAtLeast(node["cone_angle"], 0, false);
+        if (coneAngle > 180) fail(node["cone_angle"], "\"cone_angle\" must be at most 180 degrees");
+    }
+    float coneFalloff = std::min(5.0f, coneAngle);
+    if (node.has("cone_falloff")) {
+        coneFalloff = readNumberAtLeast(node["cone_falloff"], 0, true);
+        if (coneFalloff > coneAngle)
+            fail(node["cone_falloff"], "\"cone_falloff\" must not exceed \"cone_angle\"");
+    }
+    scene_.addLight(std::make_unique<SpotLight>(position, direction, intensity, coneAngle,
+                                                coneFalloff, readInverseSquareFalloff(node)));
+}
+
+const Material* SceneLoader::emitterOf(const Color& radiance) {
+    auto material = std::make_unique<Material>();
+    material->diffuse = std::make_shared<ConstantTexture>(Color(0));
+    material->ambient = material->diffuse;
+    material->emission = radiance;
+    return scene_.addMaterial(std::move(material));
+}
+
+void SceneLoader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
+                               std::unique_ptr<Light> light) {
+    // How many shadow rays the Whitted integrator traces towards it per shading point.
+    constexpr int kDefaultShadowSamples = 16;
+    light->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
+                                                : kDefaultShadowSamples);
+    surface->setAreaLight(light.get());
+    scene_.addShape(std::move(surface));
+    scene_.addLight(std::move(light));
 }
 
 // --- reading values, with messages that say where and what ---

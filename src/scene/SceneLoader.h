@@ -42,6 +42,9 @@ private:
     Scene load();
 
     void loadRender(const Node& node);
+    void loadFilter(const Node& node);
+    void loadAdaptive(const Node& render, const Node& node);
+    void loadRadiosity(const Node& node);
     void loadCamera(const Node& node);
     void loadMaterials(const Node& node);
     std::unique_ptr<Material> loadMaterial(const Node& node);
@@ -52,6 +55,13 @@ private:
     std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
     Transform readTransform(const Node& node) const;
     void loadLight(const Node& node);
+    void loadSpotLight(const Node& node);
+    bool readInverseSquareFalloff(const Node& light) const;
+    // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
+    const Material* emitterOf(const Color& radiance);
+    // Adds an area light and its visible surface, linked to each other.
+    void addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
+                      std::unique_ptr<Light> light);
     const Material* materialOf(const Node& object);
 
     [[noreturn]] void fail(const Node& node, const std::string& message) const;

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -27,6 +28,17 @@ Incident incidentLight(const nlohmann::json& light, const Vec3d& p) {
     const Radiance intensity = Radiance::fromJson(light.at("intensity"));
     const bool falloff = light.value("falloff", "inverse_square") != "none";
     return {falloff ? (1 / lengthSquared(toLight)) * intensity : intensity, normalize(toLight)};
+}
+
+double polygonIrradiance(const Vec3d& p, const Vec3d& n, const std::vector<Vec3d>& vertices) {
+    Vec3d sum;
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+        const Vec3d a = normalize(vertices[i] - p);
+        const Vec3d b = normalize(vertices[(i + 1) % vertices.size()] - p);
+        const double theta = std::acos(std::clamp(dot(a, b), -1.0, 1.0));
+        sum += theta * normalize(cross(a, b));
+    }
+    return std::abs(dot(n, sum)) / 2;
 }
 
 RayD CameraModel::rayThroughPixelCentre(int i, int j) const {

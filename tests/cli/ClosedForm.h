@@ -7,6 +7,7 @@
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <vector>
 
 #include "LancerRun.h"
 #include "math/Vec3.h"
@@ -46,6 +47,12 @@ struct Incident {
     Vec3d towardsLight;
 };
 Incident incidentLight(const nlohmann::json& light, const Vec3d& p);
+
+// The irradiance that a Lambertian polygon of radiance 1 gives a surface at p with unit normal n:
+// the integral of cos over the solid angle the polygon subtends, by Lambert's formula
+// (1/2) |sum_i theta_i n . normalize(v_i x v_i+1)|, where v_i are the vertices as seen from p and
+// theta_i the angle between v_i and v_i+1. The polygon must lie wholly above p's tangent plane.
+double polygonIrradiance(const Vec3d& p, const Vec3d& n, const std::vector<Vec3d>& vertices);
 
 // The pinhole camera of the contract: w = normalize(position - look_at), u = normalize(up x w),
 // v = w x u, and the ray through image point (px, py) has direction

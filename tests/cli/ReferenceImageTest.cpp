@@ -5,8 +5,8 @@
 //   lancer scenes/NAME.json OPTIONS --quiet -o tests/cli/data/REFERENCE
 // whitted: a checkered floor, a mirror sphere reflecting the scene, a glass sphere refracting the
 //   floor upside down, a shiny blue sphere, a gold triangle, two shadows per object.
-// cornell-box: McGuire's OBJ with its MTL colours (red and green walls, white blocks), the lamp
-//   quad glowing from its Ke, the blocks' shadows from the point light.
+// cornell-original-whitted: McGuire's OBJ with its MTL colours (red and green walls, white
+//   blocks), the quad light in front of the lamp, the blocks' soft shadows.
 // spot: the cow's PNG texture (black patches, pink nose) through uvs and mip-maps, a checkered
 //   floor, the cow's shadow.
 
@@ -52,9 +52,9 @@ INSTANTIATE_TEST_SUITE_P(
                                   {"--width", "160", "--height", "120", "--spp", "4"},
                                   "whitted-160x120.pfm"},
                     ReferenceCase{"CornellBox",
-                                  "cornell-box.json",
+                                  "cornell-original-whitted.json",
                                   {"--width", "128", "--height", "128", "--spp", "4"},
-                                  "cornell-box-128.exr"},
+                                  "cornell-original-whitted-128.exr"},
                     ReferenceCase{"TexturedModel",
                                   "spot.json",
                                   {"--width", "160", "--height", "120", "--spp", "4"},

@@ -1,4 +1,6 @@
-// The per-pixel sampler: deterministic, in range, and stratified (correlated multi-jitter).
+// The per-pixel sampler (padded Owen-scrambled Sobol): deterministic, in range, stratified for
+// every power-of-two prefix of a pixel's samples, and decorrelated between pixels and between the
+// requests of one sample.
 
 #include <gtest/gtest.h>
 
@@ -12,39 +14,45 @@
 namespace lancer {
 namespace {
 
-// The dimensions of one sample that the tests look at: 2D points and 1D values, interleaved as
-// a renderer asks for them (pixel position, lens, light...).
-constexpr int kDimensionsChecked = 3;
+// The 2D requests that the tests look at: the pixel position, the lens, a light... The
+// renderer interleaves 1D requests with them; pointsOf() does too, to show that they do not
+// disturb each other.
+constexpr int kRequestsChecked = 4;
 
-// Which of `count` equal strata of [0, 1) the value falls in (exact: a float times a small
-// integer is exact in double).
+// Which of `count` equal strata of [0, 1) the value falls in (exact: a float times a power of
+// two is exact).
 int stratumOf(float value, int count) {
     return static_cast<int>(std::floor(static_cast<double>(value) * count));
 }
 
-// All the points of one pixel for one 2D dimension: sample i's point is the `dimension`-th 2D
-// point drawn after startSample(i) (drawing 2D points only).
-std::vector<Vec2> pixelPoints(std::uint64_t seed, int x, int y, int spp, int dimension) {
-    Sampler sampler(seed, x, y, spp);
+// The points of samples 0 .. count-1 of one pixel for one 2D request: sample i's point is the
+// `request`-th 2D point drawn after startSample(i), with a 1D value drawn before each.
+std::vector<Vec2> pointsOf(std::uint64_t seed, int x, int y, int count, int request) {
+    Sampler sampler(seed, x, y);
     std::vector<Vec2> points;
-    for (int i = 0; i < spp; ++i) {
+    for (int i = 0; i < count; ++i) {
         sampler.startSample(i);
         Vec2 p;
-        for (int d = 0; d <= dimension; ++d)
+        for (int r = 0; r <= request; ++r) {
+            sampler.get1D();
             p = sampler.get2D();
+        }
         points.push_back(p);
     }
     return points;
 }
 
-std::vector<float> pixelValues(std::uint64_t seed, int x, int y, int spp, int dimension) {
-    Sampler sampler(seed, x, y, spp);
+// The values of samples 0 .. count-1 for the `request`-th 1D request, 2D points drawn between.
+std::vector<float> valuesOf(std::uint64_t seed, int x, int y, int count, int request) {
+    Sampler sampler(seed, x, y);
     std::vector<float> values;
-    for (int i = 0; i < spp; ++i) {
+    for (int i = 0; i < count; ++i) {
         sampler.startSample(i);
         float v = 0;
-        for (int d = 0; d <= dimension; ++d)
+        for (int r = 0; r <= request; ++r) {
+            sampler.get2D();
             v = sampler.get1D();
+        }
         values.push_back(v);
     }
     return values;
@@ -52,6 +60,8 @@ std::vector<float> pixelValues(std::uint64_t seed, int x, int y, int spp, int di
 
 // True when each of `count` strata holds exactly one of the values.
 testing::AssertionResult oneInEachStratum(const std::vector<int>& strata, int count) {
+    if (strata.size() != static_cast<std::size_t>(count))
+        return testing::AssertionFailure() << strata.size() << " values for " << count << " strata";
     std::vector<int> hits(static_cast<std::size_t>(count), 0);
     for (int s : strata) {
         if (s < 0 || s >= count)
@@ -64,8 +74,42 @@ testing::AssertionResult oneInEachStratum(const std::vector<int>& strata, int co
     return testing::AssertionSuccess();
 }
 
+// True when the points hold one point in each 2^k x 2^(m-k) elementary interval of the unit
+// square for every k = 0..m, where 2^m is their count: a (0, m, 2)-net.
+testing::AssertionResult isZeroNet(const std::vector<Vec2>& points) {
+    int m = 0;
+    while ((std::size_t{1} << m) < points.size())
+        ++m;
+    const int count = 1 << m;
+    for (int k = 0; k <= m; ++k) {
+        const int columns = 1 << k, rows = count / columns;
+        std::vector<int> cells;
+        for (const Vec2& p : points)
+            cells.push_back(stratumOf(p.y, rows) * columns + stratumOf(p.x, columns));
+        if (testing::AssertionResult r = oneInEachStratum(cells, count); !r)
+            return r << " (" << columns << " x " << rows << " intervals)";
+    }
+    return testing::AssertionSuccess();
+}
+
+double correlation(const std::vector<double>& a, const std::vector<double>& b) {
+    const double n = static_cast<double>(a.size());
+    double ma = 0, mb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        ma += a[i] / n;
+        mb += b[i] / n;
+    }
+    double ab = 0, aa = 0, bb = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        ab += (a[i] - ma) * (b[i] - mb);
+        aa += (a[i] - ma) * (a[i] - ma);
+        bb += (b[i] - mb) * (b[i] - mb);
+    }
+    return ab / std::sqrt(aa * bb);
+}
+
 TEST(SamplerTest, SameSeedPixelAndSampleGiveTheSameNumbers) {
-    Sampler a(7, 12, 34, 16), b(7, 12, 34, 16);
+    Sampler a(7, 12, 34), b(7, 12, 34);
     for (int i = 0; i < 16; ++i) {
         a.startSample(i);
         b.startSample(i);
@@ -78,7 +122,7 @@ TEST(SamplerTest, SameSeedPixelAndSampleGiveTheSameNumbers) {
 
 TEST(SamplerTest, ASampleDoesNotDependOnTheSamplesBeforeIt) {
     // Threads may render a pixel's samples in any order, or only some of them.
-    Sampler inOrder(3, 5, 9, 64), direct(3, 5, 9, 64);
+    Sampler inOrder(3, 5, 9), direct(3, 5, 9);
     for (int i = 0; i < 64; ++i) {
         inOrder.startSample(i);
         const Vec2 p = inOrder.get2D();
@@ -91,11 +135,11 @@ TEST(SamplerTest, ASampleDoesNotDependOnTheSamplesBeforeIt) {
     }
 }
 
-TEST(SamplerTest, DifferentPixelsAndSeedsGiveDifferentNumbers) {
-    const std::vector<Vec2> reference = pixelPoints(0, 10, 10, 16, 0);
+TEST(SamplerTest, DifferentPixelsSeedsAndRequestsGiveDifferentNumbers) {
+    const std::vector<Vec2> reference = pointsOf(0, 10, 10, 16, 0);
     for (const std::vector<Vec2>& other :
-         {pixelPoints(0, 11, 10, 16, 0), pixelPoints(0, 10, 11, 16, 0),
-          pixelPoints(1, 10, 10, 16, 0), pixelPoints(0, 10, 10, 16, 1)}) {
+         {pointsOf(0, 11, 10, 16, 0), pointsOf(0, 10, 11, 16, 0), pointsOf(1, 10, 10, 16, 0),
+          pointsOf(0, 10, 10, 16, 1)}) {
         int same = 0;
         for (std::size_t i = 0; i < reference.size(); ++i)
             same += reference[i] == other[i] ? 1 : 0;
@@ -104,77 +148,124 @@ TEST(SamplerTest, DifferentPixelsAndSeedsGiveDifferentNumbers) {
 }
 
 TEST(SamplerTest, ValuesAreInTheHalfOpenUnitInterval) {
-    for (int spp : {1, 3, 16, 100}) {
-        for (int pixel = 0; pixel < 200; ++pixel) {
-            Sampler sampler(42, pixel, 2 * pixel, spp);
-            for (int i = 0; i < spp; ++i) {
-                sampler.startSample(i);
-                for (int d = 0; d < kDimensionsChecked; ++d) {
-                    const Vec2 p = sampler.get2D();
-                    const float v = sampler.get1D();
-                    ASSERT_TRUE(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1)
-                        << p.x << ", " << p.y << " (spp " << spp << ")";
-                    ASSERT_TRUE(v >= 0 && v < 1) << v << " (spp " << spp << ")";
-                }
+    for (int pixel = 0; pixel < 200; ++pixel) {
+        Sampler sampler(42, pixel, 2 * pixel);
+        // Small indices, and large ones whose scrambled bits are all near 1.
+        for (int i : {0, 1, 2, 3, 100, 4095, 65535, 1 << 20, (1 << 30) - 1}) {
+            sampler.startSample(i);
+            for (int d = 0; d < kRequestsChecked; ++d) {
+                const Vec2 p = sampler.get2D();
+                const float v = sampler.get1D();
+                ASSERT_TRUE(p.x >= 0 && p.x < 1 && p.y >= 0 && p.y < 1)
+                    << p.x << ", " << p.y << " (sample " << i << ")";
+                ASSERT_TRUE(v >= 0 && v < 1) << v << " (sample " << i << ")";
             }
         }
     }
 }
 
-// Square sample counts n x n over many pixels: the multi-jitter properties.
-class SamplerStratificationTest : public testing::TestWithParam<int> {
+// n x n samples for n = 1, 2, 4, 8, 16, over many pixels: each of the n x n cells of the pixel
+// holds one, in the pixel-position request and in every later 2D request.
+class SamplerGridTest : public testing::TestWithParam<int> {
 protected:
-    static constexpr int kPixelsPerSide = 48;
+    static constexpr int kPixelsPerSide = 24;
 };
 
-TEST_P(SamplerStratificationTest, EachCellOfTheGridHoldsOnePoint) {
-    const int n = GetParam(), spp = n * n;
-    for (int y = 0; y < kPixelsPerSide; ++y) {
-        for (int x = 0; x < kPixelsPerSide; ++x) {
-            for (int dimension = 0; dimension < kDimensionsChecked; ++dimension) {
-                std::vector<int> cells, columns, rows;
-                for (const Vec2& p : pixelPoints(9, x, y, spp, dimension)) {
+TEST_P(SamplerGridTest, EachCellOfTheGridHoldsOnePoint) {
+    const int n = GetParam(), count = n * n;
+    for (int y = 0; y < kPixelsPerSide; ++y)
+        for (int x = 0; x < kPixelsPerSide; ++x)
+            for (int request = 0; request < kRequestsChecked; ++request) {
+                std::vector<int> cells;
+                for (const Vec2& p : pointsOf(9, x, y, count, request))
                     cells.push_back(stratumOf(p.y, n) * n + stratumOf(p.x, n));
-                    columns.push_back(stratumOf(p.x, spp));
-                    rows.push_back(stratumOf(p.y, spp));
-                }
-                ASSERT_TRUE(oneInEachStratum(cells, spp))
-                    << "n x n cells, pixel " << x << "," << y << " dimension " << dimension;
-                ASSERT_TRUE(oneInEachStratum(columns, spp))
-                    << "x strata, pixel " << x << "," << y << " dimension " << dimension;
-                ASSERT_TRUE(oneInEachStratum(rows, spp))
-                    << "y strata, pixel " << x << "," << y << " dimension " << dimension;
+                ASSERT_TRUE(oneInEachStratum(cells, count))
+                    << n << " x " << n << " cells, pixel " << x << "," << y << ", request "
+                    << request;
+            }
+}
+
+INSTANTIATE_TEST_SUITE_P(PowersOfTwo, SamplerGridTest, testing::Values(1, 2, 4, 8, 16),
+                         [](const testing::TestParamInfo<int>& n) {
+                             return "Spp" + std::to_string(n.param * n.param);
+                         });
+
+// Adaptive sampling stops anywhere: every power-of-two prefix of a pixel's samples must be
+// stratified, in every elementary interval, not only the whole set.
+TEST(SamplerTest, EveryPowerOfTwoPrefixIsAZeroNet) {
+    constexpr int kCount = 1024;
+    for (int pixel = 0; pixel < 64; ++pixel)
+        for (int request = 0; request < kRequestsChecked; ++request) {
+            const std::vector<Vec2> points = pointsOf(11, pixel % 8, pixel / 8, kCount, request);
+            for (int prefix = 1; prefix <= kCount; prefix *= 2)
+                ASSERT_TRUE(isZeroNet({points.begin(), points.begin() + prefix}))
+                    << "the first " << prefix << " samples of pixel " << pixel << ", request "
+                    << request;
+        }
+}
+
+TEST(SamplerTest, EveryPowerOfTwoPrefixOfA1DRequestIsStratified) {
+    constexpr int kCount = 256;
+    for (int pixel = 0; pixel < 500; ++pixel)
+        for (int request = 0; request < kRequestsChecked; ++request) {
+            const std::vector<float> values = valuesOf(5, pixel % 25, pixel / 25, kCount, request);
+            for (int prefix = 1; prefix <= kCount; prefix *= 2) {
+                std::vector<int> strata;
+                for (int i = 0; i < prefix; ++i)
+                    strata.push_back(stratumOf(values[static_cast<std::size_t>(i)], prefix));
+                ASSERT_TRUE(oneInEachStratum(strata, prefix))
+                    << "the first " << prefix << " samples of pixel " << pixel << ", request "
+                    << request;
             }
         }
+}
+
+// Neighbouring pixels' samples must not move together (the old failure of a pattern shared by
+// every pixel: structured aliasing instead of noise), nor two requests of one sample (the light
+// sample following the pixel position).
+TEST(SamplerTest, NeighbouringPixelsAndRequestsAreUncorrelated) {
+    constexpr int kSide = 64;  // 64 x 64 pixel pairs
+    // A correlation of N independent pairs has a standard deviation of 1/sqrt(N); 4 of them.
+    const double bound = 4 / std::sqrt(static_cast<double>(kSide * kSide));
+    for (int sample : {0, 1, 5}) {
+        std::vector<double> here, right, below, lens;
+        for (int y = 0; y < kSide; ++y)
+            for (int x = 0; x < kSide; ++x) {
+                const auto firstX = [&](int px, int py, int request) {
+                    Sampler sampler(3, px, py);
+                    sampler.startSample(sample);
+                    Vec2 p;
+                    for (int r = 0; r <= request; ++r)
+                        p = sampler.get2D();
+                    return static_cast<double>(p.x);
+                };
+                here.push_back(firstX(x, y, 0));
+                right.push_back(firstX(x + 1, y, 0));
+                below.push_back(firstX(x, y + 1, 0));
+                lens.push_back(firstX(x, y, 1));
+            }
+        EXPECT_LT(std::abs(correlation(here, right)), bound) << "sample " << sample;
+        EXPECT_LT(std::abs(correlation(here, below)), bound) << "sample " << sample;
+        EXPECT_LT(std::abs(correlation(here, lens)), bound) << "sample " << sample;
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(SquareCounts, SamplerStratificationTest,
-                         testing::Values(1, 2, 3, 4, 5, 8, 16),
-                         [](const testing::TestParamInfo<int>& count) {
-                             return "Spp" + std::to_string(count.param * count.param);
-                         });
-
-class Sampler1DStratificationTest : public testing::TestWithParam<int> {};
-
-TEST_P(Sampler1DStratificationTest, EachStratumHoldsOneValue) {
-    const int spp = GetParam();
-    for (int pixel = 0; pixel < 2000; ++pixel) {
-        for (int dimension = 0; dimension < kDimensionsChecked; ++dimension) {
-            std::vector<int> strata;
-            for (float v : pixelValues(5, pixel % 61, pixel / 61, spp, dimension))
-                strata.push_back(stratumOf(v, spp));
-            ASSERT_TRUE(oneInEachStratum(strata, spp))
-                << "pixel " << pixel << " dimension " << dimension;
-        }
+// Within one pixel, the x of one request and the x of the next are independent across the
+// samples (each request has its own shuffle of the sample index).
+TEST(SamplerTest, RequestsOfOnePixelAreUncorrelatedAcrossSamples) {
+    constexpr int kCount = 4096;
+    const double bound = 4 / std::sqrt(static_cast<double>(kCount));
+    const std::vector<Vec2> first = pointsOf(17, 3, 4, kCount, 0);
+    const std::vector<Vec2> second = pointsOf(17, 3, 4, kCount, 1);
+    std::vector<double> a, b, c;
+    for (int i = 0; i < kCount; ++i) {
+        a.push_back(first[static_cast<std::size_t>(i)].x);
+        b.push_back(second[static_cast<std::size_t>(i)].x);
+        c.push_back(second[static_cast<std::size_t>(i)].y);
     }
+    EXPECT_LT(std::abs(correlation(a, b)), bound);
+    EXPECT_LT(std::abs(correlation(a, c)), bound);
 }
-
-INSTANTIATE_TEST_SUITE_P(Counts, Sampler1DStratificationTest,
-                         testing::Values(1, 2, 3, 7, 16, 64, 100, 256),
-                         [](const testing::TestParamInfo<int>& count) {
-                             return "Spp" + std::to_string(count.param);
-                         });
 
 }  // namespace
 }  // namespace lancer

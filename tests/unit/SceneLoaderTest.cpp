@@ -61,6 +61,43 @@ TEST(SceneLoaderTest, LoadsTheRenderSettings) {
     EXPECT_EQ(scene.settings().integrator, "whitted");
 }
 
+TEST(SceneLoaderTest, LoadsTheFilterAndAdaptiveSampling) {
+    const auto settingsOf = [](const std::string& render) {
+        std::vector<std::string> warnings;
+        return load(R"({ "render": )" + render + R"(, "camera": { "position": [0, 0, 1],
+                      "look_at": [0, 0, 0] } })",
+                    warnings)
+            .settings();
+    };
+    const RenderSettings plain = settingsOf("{}");
+    EXPECT_EQ(plain.filter.type, "box");
+    EXPECT_FALSE(plain.filter.radius);
+    EXPECT_FALSE(plain.adaptive);
+
+    const RenderSettings named = settingsOf(R"({ "filter": "gaussian" })");
+    EXPECT_EQ(named.filter.type, "gaussian");
+    EXPECT_FALSE(named.filter.radius);
+    const RenderSettings sized =
+        settingsOf(R"({ "filter": { "type": "mitchell", "radius": 1.5 } })");
+    EXPECT_EQ(sized.filter.type, "mitchell");
+    EXPECT_EQ(sized.filter.radius, 1.5f);
+
+    // max_spp is the render's budget, samplesPerPixel; min_spp defaults to 16, or less budget.
+    const RenderSettings adaptive =
+        settingsOf(R"({ "adaptive": { "min_spp": 8, "max_spp": 512, "threshold": 0.02 } })");
+    ASSERT_TRUE(adaptive.adaptive);
+    EXPECT_EQ(adaptive.samplesPerPixel, 512);
+    EXPECT_EQ(adaptive.adaptive->minSamples, 8);
+    EXPECT_FLOAT_EQ(adaptive.adaptive->threshold, 0.02f);
+    const RenderSettings defaults = settingsOf(R"({ "spp": 64, "adaptive": {} })");
+    ASSERT_TRUE(defaults.adaptive);
+    EXPECT_EQ(defaults.samplesPerPixel, 64);
+    EXPECT_EQ(defaults.adaptive->minSamples, 16);
+    EXPECT_FLOAT_EQ(defaults.adaptive->threshold, 0.05f);
+    const RenderSettings small = settingsOf(R"({ "spp": 4, "adaptive": {} })");
+    EXPECT_EQ(small.adaptive->minSamples, 4);
+}
+
 TEST(SceneLoaderTest, LoadsColoursAsTriplesOrOneGreyNumber) {
     std::vector<std::string> warnings;
     const Scene scene = load(kFullScene, warnings);
@@ -258,9 +295,9 @@ INSTANTIATE_TEST_SUITE_P(
                   {"\"sphre\"", "did you mean \"sphere\""}},
         ErrorCase{"UnknownLightType",
                   "\"type\": \"point\"",
-                  "\"type\": \"spot\"",
-                  "\"spot\"",
-                  {"\"spot\""}},
+                  "\"type\": \"laser\"",
+                  "\"laser\"",
+                  {"\"laser\""}},
         ErrorCase{"BadIntegratorName",
                   "\"whitted\"",
                   "\"whited\"",

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <ostream>
 
 #include "math/Srgb.h"
@@ -63,6 +64,18 @@ TEST(SrgbTest, EncodingIsIncreasing) {
         EXPECT_GT(encoded, previous) << "at " << i;
         previous = encoded;
     }
+}
+
+// The 8-bit encoding shared by the 8-bit image files and the window.
+TEST(SrgbTest, EightBitEncodingClampsRoundsAndMapsNanToBlack) {
+    EXPECT_EQ(linearToSrgb8(0), 0);
+    EXPECT_EQ(linearToSrgb8(1), 255);
+    EXPECT_EQ(linearToSrgb8(-1), 0);
+    EXPECT_EQ(linearToSrgb8(1e30f), 255);
+    EXPECT_EQ(linearToSrgb8(std::numeric_limits<float>::quiet_NaN()), 0);
+    // sRGB(0.5) = 0.7354: 187.5 rounds to 188. sRGB(0.2) = 0.4845: 123.5 rounds to 124.
+    EXPECT_EQ(linearToSrgb8(0.5f), 188);
+    EXPECT_EQ(linearToSrgb8(0.2f), 124);
 }
 
 }  // namespace

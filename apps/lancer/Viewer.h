@@ -1,0 +1,78 @@
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "render/Film.h"
+#include "render/Renderer.h"
+
+struct SDL_Renderer;
+struct SDL_Texture;
+struct SDL_Window;
+
+namespace lancer {
+
+// What the user did in the window.
+struct ViewerEvent {
+    enum class Kind {
+        Close,  // Esc, or the window closed
+        Save,   // S
+        Drag,   // the mouse moved with its left button down: dx, dy
+        Zoom,   // the wheel turned: steps, positive away from the user (zoom in)
+    };
+    Kind kind;
+    // For Drag: the move as fractions of the window's width and height, x right, y down.
+    float dx = 0, dy = 0;
+    int steps = 0;
+};
+
+// A window (SDL2) showing an image while something computes it. The image and the status in the
+// title can be changed from any thread (a renderer's workers); the window itself belongs to the
+// thread that opened it, which must call poll() often to keep it alive and up to date.
+class Viewer {
+public:
+    // A window titled `name` for a width x height image, scaled down to fit the screen if larger.
+    // Null, with the reason in `error`, when there is no display to open it on.
+    static std::unique_ptr<Viewer> open(const std::string& name, int width, int height,
+                                        std::string& error);
+    ~Viewer();
+    Viewer(const Viewer&) = delete;
+    Viewer& operator=(const Viewer&) = delete;
+
+    // --- any thread ---
+
+    // Shows `film`'s pixels in `tile` (a copy: film may change afterwards).
+    void showTile(const Film& film, const PixelWindow& tile);
+    void showFilm(const Film& film);
+    // The title becomes "NAME  STATUS".
+    void setStatus(const std::string& status);
+    // What the window shows, in linear radiance.
+    Film image() const;
+
+    // --- the thread that opened the window ---
+
+    // Draws what changed, updates the title, and returns what the user did since the last call,
+    // waiting up to `timeout` for something to happen.
+    std::vector<ViewerEvent> poll(std::chrono::milliseconds timeout);
+
+private:
+    Viewer(const std::string& name, int width, int height);
+
+    std::string name_;
+    SDL_Window* window_ = nullptr;
+    SDL_Renderer* renderer_ = nullptr;
+    SDL_Texture* texture_ = nullptr;
+    bool exposed_ = true;  // the window needs drawing (the UI thread's own)
+
+    mutable std::mutex mutex_;  // guards the members below
+    Film image_;
+    std::vector<unsigned char> pixels8_;  // image_ as the window shows it: 8-bit sRGB, RGB order
+    PixelWindow changed_;                 // what changed since the last upload; empty if nothing
+    std::string status_;
+    bool statusChanged_ = false;
+};
+
+}  // namespace lancer

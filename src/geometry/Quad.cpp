@@ -1,0 +1,57 @@
+#include "geometry/Quad.h"
+
+namespace lancer {
+
+Quad::Quad(const Vec3& corner, const Vec3& edge1, const Vec3& edge2, const Material* material)
+    : Shape(material), corner_(corner), edge1_(edge1), edge2_(edge2) {
+    const Vec3d n = cross(Vec3d(edge1), Vec3d(edge2));
+    normal_ = Vec3(normalize(n));
+    area_ = static_cast<float>(length(n));
+}
+
+Bounds3 Quad::bounds() const {
+    const Bounds3 box = merge(merge(Bounds3(corner_, corner_ + edge1_), corner_ + edge2_),
+                              corner_ + edge1_ + edge2_);
+    // The corners were rounded to float; the surface the intersection finds (in double) may
+    // reach a few ulps beyond them.
+    const Vec3 slack = gamma(3) * max(abs(box.min), abs(box.max));
+    return {box.min - slack, box.max + slack};
+}
+
+bool Quad::intersect(const Ray& ray, float tMax, Hit& hit) const {
+    // In double precision, as the plane: the sign of t must be exact for a ray spawned just off
+    // the surface, and the edge tests must not let rays slip between two quads sharing an edge.
+    const Vec3d e1(edge1_), e2(edge2_);
+    const Vec3d n = cross(e1, e2);
+    const Vec3d d(ray.direction);
+    const double denominator = dot(n, d);
+    if (denominator == 0) return false;  // parallel
+    const Vec3d o(ray.origin);
+    const Vec3d c(corner_);
+    const double t = dot(n, c - o) / denominator;
+    if (!(t > 0 && t < tMax)) return false;
+
+    // The hit point relative to the corner, projected back onto the plane, then its coordinates
+    // along the edges: q = u e1 + v e2 gives q x e2 = u n and e1 x q = v n.
+    Vec3d q = o + t * d - c;
+    const double nn = dot(n, n);
+    q -= (dot(n, q) / nn) * n;
+    const double u = dot(cross(q, e2), n) / nn;
+    const double v = dot(cross(e1, q), n) / nn;
+    if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) return false;
+
+    const Vec3 p(c + q);
+    hit.t = static_cast<float>(t);
+    hit.p = p;
+    hit.pError = gamma(2) * abs(p);
+    hit.ng = normal_;
+    hit.ns = normal_;
+    hit.dpdu = edge1_;
+    hit.dpdv = edge2_;
+    hit.uv = {static_cast<float>(u), static_cast<float>(v)};
+    hit.shape = this;
+    hit.material = material();
+    return true;
+}
+
+}  // namespace lancer

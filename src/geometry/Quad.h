@@ -1,0 +1,34 @@
+#pragma once
+
+#include "geometry/Shape.h"
+#include "math/Vec2.h"
+
+namespace lancer {
+
+// A parallelogram: the points corner + u edge1 + v edge2 for u, v in [0, 1], with uv = (u, v).
+// Its front side, the one edge1 x edge2 points to, is the side it emits light on (a quad light's
+// visible surface).
+class Quad final : public Shape {
+public:
+    Quad(const Vec3& corner, const Vec3& edge1, const Vec3& edge2, const Material* material);
+
+    bool intersect(const Ray& ray, float tMax, Hit& hit) const override;
+    Bounds3 bounds() const override;
+    bool emitsOnBothSides() const override { return false; }
+
+    const Vec3& corner() const { return corner_; }
+    const Vec3& edge1() const { return edge1_; }
+    const Vec3& edge2() const { return edge2_; }
+    // The unit normal on the front side.
+    const Vec3& normal() const { return normal_; }
+    float area() const { return area_; }
+    // The point at surface coordinates uv.
+    Vec3 pointAt(const Vec2& uv) const { return corner_ + uv.x * edge1_ + uv.y * edge2_; }
+
+private:
+    Vec3 corner_, edge1_, edge2_;
+    Vec3 normal_;
+    float area_;
+};
+
+}  // namespace lancer

@@ -1,0 +1,27 @@
+#pragma once
+
+#include "materials/BsdfLobe.h"
+
+namespace lancer {
+
+// A smooth dielectric boundary of weight kt (the scene's `transmission`) and index `ior` on the
+// front side (+z) against 1 on the back: it reflects the Fresnel fraction F and refracts 1 - F
+// (all of it reflected under total internal reflection), choosing one of the two with those
+// probabilities. Refracted radiance is scaled by 1 / eta^2 (radiance is compressed entering a
+// denser medium), as in pbrt and Mitsuba.
+class DielectricLobe final : public BsdfLobe {
+public:
+    DielectricLobe(const Color& weight, float ior) : weight_(weight), ior_(ior) {}
+
+    bool isDelta() const override { return true; }
+    Color f(const Vec3&, const Vec3&) const override { return Color(0); }
+    float pdf(const Vec3&, const Vec3&) const override { return 0; }
+    // u.x chooses between reflection and refraction.
+    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
+
+private:
+    Color weight_;
+    float ior_;
+};
+
+}  // namespace lancer

@@ -1,0 +1,22 @@
+#pragma once
+
+#include "materials/BsdfLobe.h"
+
+namespace lancer {
+
+// Ideal diffuse reflection of albedo kd, f = kd / pi, on whichever side wo is (surfaces are
+// two-sided); sampled by cos(theta).
+class LambertianLobe final : public BsdfLobe {
+public:
+    explicit LambertianLobe(const Color& albedo) : albedo_(albedo) {}
+
+    bool isDelta() const override { return false; }
+    Color f(const Vec3& wo, const Vec3& wi) const override;
+    float pdf(const Vec3& wo, const Vec3& wi) const override;
+    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
+
+private:
+    Color albedo_;
+};
+
+}  // namespace lancer

@@ -1,0 +1,69 @@
+#include "radiosity/RadiosityIntegrator.h"
+
+#include <bit>
+#include <cmath>
+
+#include "lights/Light.h"
+#include "materials/BlinnPhongLobe.h"
+#include "materials/Material.h"
+#include "radiosity/RadiositySolver.h"
+#include "render/Sampler.h"
+#include "render/Sampling.h"
+#include "scene/Scene.h"
+
+namespace lancer {
+
+RadiosityIntegrator::RadiosityIntegrator(const Scene& scene, int maxDepth,
+                                         std::shared_ptr<const RadiositySolution> solution)
+    : WhittedIntegrator(scene, maxDepth), solution_(std::move(solution)) {}
+
+Color RadiosityIntegrator::localShading(const Hit& hit, const Vec3& n, const Vec3& wo,
+                                        Sampler& sampler, std::uint64_t& rayCount) const {
+    const Material& material = *hit.material;
+    Color L;
+    const Color kd = material.diffuse->evaluate(hit);
+    if (!kd.isBlack()) {
+        std::optional<Color> E = solution_->irradiance(hit.p, hit.ng, wo);
+        if (!E) {
+            // Stratified light samples, placed by this sample's own numbers.
+            constexpr int kLightSamples = 16;
+            const Vec2 u = sampler.get2D();
+            E = RadiositySolver::irradianceFromLights(
+                scene(), hit.p, hit.ng, n, kLightSamples,
+                hashValues(std::bit_cast<std::uint32_t>(u.x), std::bit_cast<std::uint32_t>(u.y)),
+                rayCount);
+        }
+        L += kd * *E / kPi;
+    }
+    if (!material.specular.isBlack()) L += highlights(hit, n, wo, sampler, rayCount);
+    return L;
+}
+
+Color RadiosityIntegrator::highlights(const Hit& hit, const Vec3& n, const Vec3& wo,
+                                      Sampler& sampler, std::uint64_t& rayCount) const {
+    const Material& material = *hit.material;
+    // The path integrator's lobe, in the frame of the shading normal.
+    const BlinnPhongLobe lobe(material.specular, material.shininess);
+    Vec3 a, b;
+    coordinateSystem(n, a, b);
+    const auto local = [&](const Vec3& v) { return Vec3(dot(v, a), dot(v, b), dot(v, n)); };
+    const Vec3 woLocal = local(wo);
+    Color L;
+    for (const auto& light : scene().lights()) {
+        const int count = light->isDelta() ? 1 : light->shadowSamples();
+        Color sum;
+        for (int k = 0; k < count; ++k) {
+            const Vec2 u = light->isDelta() ? Vec2(0.5f, 0.5f) : sampler.get2D();
+            const LightSample ls = light->sample(hit.p, u);
+            const float cosTheta = dot(n, ls.wi);
+            if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
+            const Color f = lobe.f(woLocal, local(ls.wi));
+            if (f.isBlack()) continue;
+            sum += cosTheta * f * ls.irradiance * scene().transmittance(hit, ls, rayCount);
+        }
+        L += sum / static_cast<float>(count);
+    }
+    return L;
+}
+
+}  // namespace lancer

@@ -1,0 +1,35 @@
+#pragma once
+
+#include <memory>
+
+#include "radiosity/RadiositySolution.h"
+#include "render/WhittedIntegrator.h"
+
+namespace lancer {
+
+// The second pass of radiosity: eye rays traced as in Whitted (emission seen directly, mirror
+// reflection and refraction followed), but at a diffuse surface the light it reflects comes from
+// the radiosity solution, interpolated smoothly over the element under the hit: kd / pi times the
+// irradiance. Lights add only their highlights (the path integrator's normalized Blinn-Phong
+// lobe, BlinnPhongLobe): their diffuse light is in the solution already, and there is no ambient
+// term, so no light is counted twice. Where the solution has no element (a plane beyond the
+// clipped part), the diffuse light is the lights' direct light alone.
+class RadiosityIntegrator final : public WhittedIntegrator {
+public:
+    RadiosityIntegrator(const Scene& scene, int maxDepth,
+                        std::shared_ptr<const RadiositySolution> solution);
+
+    const RadiositySolution& solution() const { return *solution_; }
+
+protected:
+    Color localShading(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,
+                       std::uint64_t& rayCount) const override;
+
+private:
+    Color highlights(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,
+                     std::uint64_t& rayCount) const;
+
+    std::shared_ptr<const RadiositySolution> solution_;
+};
+
+}  // namespace lancer

@@ -1,0 +1,18 @@
+#pragma once
+
+namespace lancer {
+
+// The scene file's "radiosity" block (docs/SCENE-FORMAT.md). Sizes of 0 mean "derived from the
+// scene's size".
+struct RadiositySettings {
+    float patchSize = 0;    // longest edge of a shooting patch; 0: the scene's diagonal / 8
+    float elementSize = 0;  // longest edge of a receiving element; 0: patchSize / 2
+    // Shooting stops once the unshot power left is below this fraction of the power emitted.
+    float threshold = 0.01f;
+    int maxShots = 100000;              // a bound on the shots, whatever the threshold
+    int subdivisionLevels = 2;          // how many times an element may be split in four
+    float subdivisionTolerance = 0.1f;  // relative jump in irradiance that makes an element split
+    int visibilityRays = 4;             // rays per form factor, to points on the shooter
+};
+
+}  // namespace lancer

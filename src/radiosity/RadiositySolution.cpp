@@ -1,0 +1,208 @@
+#include "radiosity/RadiositySolution.h"
+
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "geometry/Triangle.h"
+#include "io/InputError.h"
+
+namespace lancer {
+
+namespace {
+
+constexpr char kMagic[16] = {'l', 'a', 'n', 'c', 'e', 'r', ' ', 'r',
+                             'a', 'd', 'i', 'o', 's', 'i', 't', 'y'};
+constexpr std::uint32_t kVersion = 1;
+
+// Reads fixed-size values from the bytes of a file, failing on a short read.
+class Reader {
+public:
+    Reader(const std::string& bytes, const std::filesystem::path& path)
+        : bytes_(bytes), path_(path) {}
+
+    template <typename T>
+    T read() {
+        T value;
+        need(sizeof(T));
+        std::memcpy(&value, bytes_.data() + offset_, sizeof(T));
+        offset_ += sizeof(T);
+        return value;
+    }
+    float readFinite() {
+        const auto v = read<float>();
+        if (!std::isfinite(v)) fail("holds a value that is not a finite number");
+        return v;
+    }
+    // A count of records of `recordSize` bytes that must fit in what is left of the file.
+    std::uint64_t readCount(std::size_t recordSize) {
+        const auto count = read<std::uint64_t>();
+        if (count > (bytes_.size() - offset_) / recordSize) fail("is truncated");
+        return count;
+    }
+    bool atEnd() const { return offset_ == bytes_.size(); }
+    [[noreturn]] void fail(const std::string& what) const {
+        throw InputError(path_.string(), "the radiosity file " + what + " (damaged?)");
+    }
+
+private:
+    void need(std::size_t n) const {
+        if (bytes_.size() - offset_ < n) fail("is truncated");
+    }
+
+    const std::string& bytes_;
+    std::filesystem::path path_;
+    std::size_t offset_ = 0;
+};
+
+template <typename T>
+void write(std::ostream& out, const T& value) {
+    out.write(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+}  // namespace
+
+RadiositySolution::RadiositySolution(std::vector<std::array<Vec3, 3>> faces,
+                                     std::vector<std::array<std::uint32_t, 3>> faceVertices,
+                                     std::vector<std::array<Color, 2>> vertexIrradiance,
+                                     float lookupDistance, std::uint64_t fingerprint,
+                                     const RadiosityStatistics& statistics)
+    : faces_(std::move(faces)),
+      faceVertices_(std::move(faceVertices)),
+      vertexIrradiance_(std::move(vertexIrradiance)),
+      lookupDistance_(lookupDistance),
+      fingerprint_(fingerprint),
+      statistics_(statistics) {
+    buildLookup();
+}
+
+void RadiositySolution::buildLookup() {
+    std::vector<Bounds3> bounds;
+    bounds.reserve(faces_.size());
+    for (const auto& f : faces_)
+        bounds.push_back(merge(Bounds3(f[0], f[1]), f[2]));
+    lookup_ = Bvh(bounds);
+    std::vector<std::array<Vec3, 3>> faces;
+    std::vector<std::array<std::uint32_t, 3>> vertices;
+    for (std::uint32_t i : lookup_.primitiveOrder()) {
+        faces.push_back(faces_[i]);
+        vertices.push_back(faceVertices_[i]);
+    }
+    faces_ = std::move(faces);
+    faceVertices_ = std::move(vertices);
+}
+
+std::optional<Color> RadiositySolution::irradiance(const Vec3& p, const Vec3& ng,
+                                                   const Vec3& towardsViewer) const {
+    // A short ray through p along the normal finds the element under p; of several (surfaces
+    // closer together than the lookup distance), the one nearest p that faces the same way.
+    const Ray probe{p + lookupDistance_ * ng, -ng};
+    float tMax = 2 * lookupDistance_;
+    std::optional<std::uint32_t> best;
+    TriangleIntersection bestAt{};
+    float bestGap = kInfinity;
+    lookup_.intersect(probe, tMax, [&](std::uint32_t k, const Ray& ray, float& limit) {
+        const auto& f = faces_[k];
+        const auto at = Triangle::intersect(f[0], f[1], f[2], ray, limit);
+        if (!at) return false;
+        const Vec3 n = normalize(cross(f[1] - f[0], f[2] - f[0]));
+        if (std::abs(dot(n, ng)) < 0.5f) return false;
+        const float gap = std::abs(at->t - lookupDistance_);
+        if (gap < bestGap) {
+            bestGap = gap;
+            best = k;
+            bestAt = *at;
+        }
+        return false;  // keep looking: the nearest to p wins, not the first along the probe
+    });
+    if (!best) return std::nullopt;
+    const auto& f = faces_[*best];
+    const Vec3 n = cross(f[1] - f[0], f[2] - f[0]);
+    const std::size_t side = dot(n, towardsViewer) >= 0 ? 0 : 1;
+    const auto& v = faceVertices_[*best];
+    return bestAt.b0 * vertexIrradiance_[v[0]][side] + bestAt.b1 * vertexIrradiance_[v[1]][side] +
+           bestAt.b2 * vertexIrradiance_[v[2]][side];
+}
+
+void RadiositySolution::save(const std::filesystem::path& path) const {
+    std::filesystem::path temporary = path;
+    temporary += ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out) throw std::runtime_error(path.string() + ": cannot write the radiosity file");
+        out.write(kMagic, sizeof kMagic);
+        write(out, kVersion);
+        write(out, fingerprint_);
+        write(out, statistics_);
+        write(out, lookupDistance_);
+        write(out, static_cast<std::uint64_t>(vertexIrradiance_.size()));
+        for (const auto& sides : vertexIrradiance_)
+            for (const Color& c : sides)
+                for (float channel : {c.r, c.g, c.b})
+                    write(out, channel);
+        write(out, static_cast<std::uint64_t>(faces_.size()));
+        for (std::size_t i = 0; i < faces_.size(); ++i) {
+            for (const Vec3& p : faces_[i])
+                for (int axis = 0; axis < 3; ++axis)
+                    write(out, p[axis]);
+            for (std::uint32_t v : faceVertices_[i])
+                write(out, v);
+        }
+        if (!out.flush())
+            throw std::runtime_error(path.string() + ": cannot write the radiosity file");
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        std::filesystem::remove(temporary, error);
+        throw std::runtime_error(path.string() + ": cannot write the radiosity file");
+    }
+}
+
+RadiositySolution RadiositySolution::load(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in || std::filesystem::is_directory(path))
+        throw InputError(path.string(), "cannot open the radiosity file (does it exist?)");
+    std::ostringstream text;
+    text << in.rdbuf();
+    const std::string bytes = text.str();
+    Reader reader(bytes, path);
+    if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
+        throw InputError(path.string(), "not a lancer radiosity file");
+    for (std::size_t i = 0; i < sizeof kMagic; ++i)
+        reader.read<char>();
+    if (reader.read<std::uint32_t>() != kVersion)
+        throw InputError(path.string(), "a radiosity file of another version of lancer");
+    RadiositySolution s;
+    s.fingerprint_ = reader.read<std::uint64_t>();
+    s.statistics_ = reader.read<RadiosityStatistics>();
+    s.lookupDistance_ = reader.readFinite();
+    const std::uint64_t vertexCount = reader.readCount(6 * sizeof(float));
+    s.vertexIrradiance_.resize(vertexCount);
+    for (auto& sides : s.vertexIrradiance_)
+        for (Color& c : sides) {
+            c.r = reader.readFinite();
+            c.g = reader.readFinite();
+            c.b = reader.readFinite();
+        }
+    const std::uint64_t faceCount = reader.readCount(9 * sizeof(float) + 3 * sizeof(std::uint32_t));
+    s.faces_.resize(faceCount);
+    s.faceVertices_.resize(faceCount);
+    for (std::size_t i = 0; i < faceCount; ++i) {
+        for (Vec3& p : s.faces_[i])
+            for (int axis = 0; axis < 3; ++axis)
+                p[axis] = reader.readFinite();
+        for (std::uint32_t& v : s.faceVertices_[i]) {
+            v = reader.read<std::uint32_t>();
+            if (v >= vertexCount) reader.fail("names a vertex it does not hold");
+        }
+    }
+    if (!reader.atEnd()) reader.fail("has bytes after its end");
+    if (!(s.lookupDistance_ >= 0)) reader.fail("holds a negative distance");
+    s.buildLookup();
+    return s;
+}
+
+}  // namespace lancer

@@ -1,0 +1,66 @@
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <vector>
+
+#include "accel/Bvh.h"
+#include "math/Color.h"
+#include "math/Vec3.h"
+
+namespace lancer {
+
+// What a solve did, for the report lancer prints.
+struct RadiosityStatistics {
+    std::uint64_t patches = 0;
+    std::uint64_t elements = 0;  // leaves: what the image shows
+    std::uint64_t shots = 0;     // iterations of progressive refinement
+    double initialPower = 0;     // W (mean over r, g, b): emitted, and received from lights
+    double residualPower = 0;    // W left unshot at the end
+    double seconds = 0;
+    std::uint64_t rays = 0;
+};
+
+// A solved radiosity solution, independent of the view: the leaf elements with, at each of their
+// corners, the irradiance on both sides, averaged over the elements sharing the corner, for
+// smooth (Gouraud) interpolation. It is saved to and loaded from files, which hold the
+// fingerprint of the scene they were solved for.
+class RadiositySolution {
+public:
+    RadiositySolution() = default;
+    RadiositySolution(std::vector<std::array<Vec3, 3>> faces,
+                      std::vector<std::array<std::uint32_t, 3>> faceVertices,
+                      std::vector<std::array<Color, 2>> vertexIrradiance, float lookupDistance,
+                      std::uint64_t fingerprint, const RadiosityStatistics& statistics);
+
+    // The irradiance at p, on a surface of geometric normal ng, on the side `towardsViewer`
+    // points to: interpolated over the element found under p within the lookup distance along
+    // ng. Nothing when no element is there (beyond a clipped plane, a shape not meshed).
+    std::optional<Color> irradiance(const Vec3& p, const Vec3& ng, const Vec3& towardsViewer) const;
+
+    std::size_t faceCount() const { return faces_.size(); }
+    std::uint64_t fingerprint() const { return fingerprint_; }
+    const RadiosityStatistics& statistics() const { return statistics_; }
+
+    // Writes the solution (through a temporary file renamed into place); throws
+    // std::runtime_error when it cannot.
+    void save(const std::filesystem::path& path) const;
+    // Reads a saved solution; throws InputError naming the file when it cannot be read or is
+    // damaged.
+    static RadiositySolution load(const std::filesystem::path& path);
+
+private:
+    void buildLookup();
+
+    std::vector<std::array<Vec3, 3>> faces_;  // in the lookup BVH's leaf order once built
+    std::vector<std::array<std::uint32_t, 3>> faceVertices_;
+    std::vector<std::array<Color, 2>> vertexIrradiance_;  // front, back
+    float lookupDistance_ = 0;
+    std::uint64_t fingerprint_ = 0;
+    RadiosityStatistics statistics_;
+    Bvh lookup_;
+};
+
+}  // namespace lancer

@@ -1,0 +1,430 @@
+#include "radiosity/RadiositySolver.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <atomic>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <unordered_map>
+
+#include "lights/Light.h"
+#include "radiosity/PatchMesher.h"
+#include "radiosity/StratifiedPoint.h"
+#include "radiosity/SurfaceProbe.h"
+#include "scene/Scene.h"
+
+namespace lancer {
+
+namespace {
+
+std::uint64_t fold(std::uint64_t h, float v) {
+    return hashValues(h, std::bit_cast<std::uint32_t>(v));
+}
+std::uint64_t fold(std::uint64_t h, const Vec3& v) {
+    return fold(fold(fold(h, v.x), v.y), v.z);
+}
+std::uint64_t fold(std::uint64_t h, const Color& c) {
+    return fold(fold(fold(h, c.r), c.g), c.b);
+}
+
+// Runs body(i, rayCount) for i in [0, count) on all threads, and adds up the rays.
+template <typename Body>
+std::uint64_t parallelFor(std::size_t count, const Body& body) {
+    std::atomic<std::uint64_t> rays{0};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          std::uint64_t local = 0;
+                          for (std::size_t i = range.begin(); i != range.end(); ++i)
+                              body(i, local);
+                          rays += local;
+                      });
+    return rays;
+}
+
+// A shot carrying at least this fraction of the power put in traces all its visibility rays.
+constexpr double kStrongShot = 1e-3;
+
+// How far the receivers' form factors to a shooting element may add up beyond reciprocity's bound
+// (see shoot).
+constexpr double kMostTaken = 1.1;
+
+// Stratified samples per area light when lighting elements (more if the light asks for more).
+constexpr int kAreaLightSamples = 16;
+
+}  // namespace
+
+RadiositySolver::RadiositySolver(const Scene& scene)
+    : scene_(scene), settings_(scene.settings().radiosity), patchSize_(0), formFactor_(scene) {
+    const PatchMesher mesher(scene, settings_);
+    patchSize_ = mesher.patchSize();
+    mesh_ = mesher.mesh();
+
+    std::uint64_t h = hashValues(mesh_.patches.size(), mesh_.elements.size());
+    for (const Patch& p : mesh_.patches) {
+        for (const Vec3& c : p.corners)
+            h = fold(h, c);
+        h = fold(fold(h, p.emission[0]), p.emission[1]);
+        for (std::uint32_t e = p.firstElement; e < p.firstElement + p.elementCount; ++e)
+            h = fold(h, mesh_.elements[e].reflectance);
+    }
+    // A light is known by what it delivers to two fixed points, and by its power.
+    for (const auto& light : scene.lights())
+        for (const Vec3& probe : {Vec3(0.123f, 0.456f, 0.789f), Vec3(-7.1f, 3.3f, -2.9f)}) {
+            const LightSample s = light->sample(probe, Vec2(0.25f, 0.75f));
+            h = fold(fold(fold(fold(h, s.wi), s.irradiance), s.position), light->power(1));
+        }
+    h = fold(fold(fold(h, settings_.patchSize), settings_.elementSize), settings_.threshold);
+    h = fold(h, settings_.subdivisionTolerance);
+    fingerprint_ =
+        hashValues(h, settings_.maxShots, settings_.subdivisionLevels, settings_.visibilityRays);
+}
+
+Color RadiositySolver::irradianceFromLights(const Scene& scene, const Vec3& p, const Vec3& ng,
+                                            const Vec3& n, int samples, std::uint64_t seed,
+                                            std::uint64_t& rayCount) {
+    Hit from;
+    from.p = p;
+    from.pError = gamma(16) * abs(p);
+    from.ng = ng;
+    Color E;
+    for (std::size_t l = 0; l < scene.lights().size(); ++l) {
+        const Light& light = *scene.lights()[l];
+        const int count = light.isDelta() ? 1 : std::max(samples, light.shadowSamples());
+        Color sum;
+        for (int k = 0; k < count; ++k) {
+            const Vec2 u =
+                light.isDelta() ? Vec2(0.5f, 0.5f) : stratifiedPoint(k, count, hashValues(seed, l));
+            const LightSample ls = light.sample(p, u);
+            const float cosTheta = dot(n, ls.wi);
+            if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
+            sum += cosTheta * ls.irradiance * scene.transmittance(from, ls, rayCount);
+        }
+        E += sum / static_cast<float>(count);
+    }
+    return E;
+}
+
+std::array<Color, 2> RadiositySolver::lightIrradiance(const Element& e, std::uint64_t key,
+                                                      std::uint64_t& rayCount) const {
+    std::array<Color, 2> E;
+    if (scene_.lights().empty()) return E;
+    for (Side side : kBothSides)
+        E[sideIndex(side)] = irradianceFromLights(
+            scene_, e.surfacePoint, e.surfaceNormal, side == Side::Front ? e.normal : -e.normal,
+            kAreaLightSamples, hashValues(key, sideIndex(side)), rayCount);
+    return E;
+}
+
+void RadiositySolver::lightElements() {
+    const std::vector<std::uint32_t> leaves = mesh_.leaves();
+    std::vector<std::array<Color, 2>> E(leaves.size());
+    rays_ += parallelFor(leaves.size(), [&](std::size_t i, std::uint64_t& rays) {
+        E[i] = lightIrradiance(mesh_.elements[leaves[i]], leaves[i], rays);
+    });
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        Element& e = mesh_.elements[leaves[i]];
+        Patch& patch = mesh_.patches[e.patch];
+        for (std::size_t side = 0; side < 2; ++side) {
+            e.irradiance[side] += E[i][side];
+            e.unshot[side] += e.reflectance * E[i][side];
+            patch.unshot[side] += e.reflectance * E[i][side] * (e.area / patch.area);
+        }
+    }
+}
+
+void RadiositySolver::shoot(std::uint32_t shooter, Side side, int rays,
+                            const std::vector<std::uint32_t>& receivers) {
+    Patch& patch = mesh_.patches[shooter];
+    const std::size_t s = sideIndex(side);
+    // Each element of the patch shoots its own unshot radiosity, with its share of the rays.
+    struct Shot {
+        std::uint32_t element;
+        Color radiosity;
+    };
+    std::vector<Shot> shots;
+    for (std::uint32_t k = patch.firstElement; k < patch.firstElement + patch.elementCount; ++k) {
+        Element& e = mesh_.elements[k];
+        if (e.unshot[s].isBlack()) continue;
+        shots.push_back({k, e.unshot[s]});
+        e.shot[s] += e.unshot[s];
+        e.unshot[s] = Color(0);
+    }
+    patch.unshot[s] = Color(0);
+    const int raysEach = std::max(1, rays / static_cast<int>(patch.elementCount));
+    // F from each receiver side to each shooting element: formFactors[(i * 2 + r) * n + k].
+    const std::size_t n = shots.size();
+    std::vector<Color> formFactors(receivers.size() * 2 * n);
+    rays_ += parallelFor(receivers.size(), [&](std::size_t i, std::uint64_t& rayCount) {
+        const std::uint32_t e = receivers[i];
+        const Element& element = mesh_.elements[e];
+        if (element.patch == shooter) return;  // flat: it cannot see itself
+        for (Side r : kBothSides)
+            for (std::size_t k = 0; k < n; ++k)
+                formFactors[(i * 2 + sideIndex(r)) * n + k] = formFactor_.elementToTriangle(
+                    element, r, mesh_.corners(mesh_.elements[shots[k].element]), patch, side,
+                    raysEach, hashValues(shots[k].element, s, e, sideIndex(r)), rayCount);
+    });
+    // A form factor taken at the receiver's centroid stands for its whole area: a large receiver
+    // close to a small shooter (a ceiling just above a lamp's back) can then take in more than
+    // the shooter sends. Reciprocity bounds what all receivers take, sum A_j F_jk <= A_k. Sums
+    // a little above (the quadrature's error near corners) are left alone, so that closed rooms
+    // keep their energy; a sum beyond kMostTaken times is scaled back to A_k, so that no
+    // shot creates power (rho kMostTaken < 1 for any albedo below 0.9) and the solve converges.
+    std::vector<float> scale(n, 1);
+    for (std::size_t k = 0; k < n; ++k) {
+        double taken = 0;
+        for (std::size_t i = 0; i < receivers.size(); ++i)
+            for (std::size_t r = 0; r < 2; ++r)
+                taken += static_cast<double>(formFactors[(i * 2 + r) * n + k].maxComponent()) *
+                         mesh_.elements[receivers[i]].area;
+        const double sent = mesh_.elements[shots[k].element].area;
+        if (taken > kMostTaken * sent) scale[k] = static_cast<float>(sent / taken);
+    }
+    for (std::size_t i = 0; i < receivers.size(); ++i) {
+        Element& e = mesh_.elements[receivers[i]];
+        Patch& target = mesh_.patches[e.patch];
+        for (std::size_t r = 0; r < 2; ++r) {
+            Color received;
+            for (std::size_t k = 0; k < n; ++k)
+                received += shots[k].radiosity * formFactors[(i * 2 + r) * n + k] * scale[k];
+            e.irradiance[r] += received;
+            e.unshot[r] += e.reflectance * received;
+            target.unshot[r] += e.reflectance * received * (e.area / target.area);
+        }
+    }
+}
+
+std::array<Color, 2> RadiositySolver::gather(const Element& e, std::uint64_t key,
+                                             std::uint64_t& rayCount) const {
+    std::array<Color, 2> E = lightIrradiance(e, key, rayCount);
+    for (std::uint32_t i = 0; i < mesh_.patches.size(); ++i) {
+        if (i == e.patch) continue;
+        const Patch& patch = mesh_.patches[i];
+        for (std::uint32_t k = patch.firstElement; k < patch.firstElement + patch.elementCount;
+             ++k) {
+            const Element& shooter = mesh_.elements[k];
+            for (Side s : kBothSides) {
+                const Color& shot = shooter.shot[sideIndex(s)];
+                if (shot.isBlack()) continue;
+                // Shooters that shot much (the emitters, the brightest walls) make the shadows
+                // that show: they get all the rays.
+                const int raysEach = shot.average() * shooter.area >= kStrongShot * initialPower_
+                                         ? settings_.visibilityRays
+                                         : 1;
+                for (Side r : kBothSides)
+                    E[sideIndex(r)] +=
+                        shot * formFactor_.elementToTriangle(
+                                   e, r, mesh_.corners(shooter), patch, s, raysEach,
+                                   hashValues(k, sideIndex(s), key, sideIndex(r)), rayCount);
+            }
+        }
+    }
+    return E;
+}
+
+RadiositySolver::Smoothing RadiositySolver::smooth(const std::vector<std::uint32_t>& leaves) const {
+    struct Key {
+        std::int64_t x, y, z;
+        bool operator==(const Key&) const = default;
+    };
+    struct KeyHash {
+        std::size_t operator()(const Key& k) const {
+            return static_cast<std::size_t>(hashValues(static_cast<std::uint64_t>(k.x),
+                                                       static_cast<std::uint64_t>(k.y),
+                                                       static_cast<std::uint64_t>(k.z)));
+        }
+    };
+    // Corners closer than this are one vertex (midpoints of a shared edge are computed alike on
+    // both sides, so the cells only absorb rounding).
+    const double cell = 1e-5 * patchSize_;
+    std::unordered_map<Key, std::vector<std::uint32_t>, KeyHash> buckets;
+    std::vector<Vec3> vertexNormals;
+    std::vector<float> weights;
+    Smoothing s;
+    s.faceVertices.resize(leaves.size());
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const Element& e = mesh_.elements[leaves[i]];
+        for (std::size_t k = 0; k < 3; ++k) {
+            const Vec3& p = mesh_.positions[e.vertices[k]];
+            const Key key{std::llround(p.x / cell), std::llround(p.y / cell),
+                          std::llround(p.z / cell)};
+            std::vector<std::uint32_t>& bucket = buckets[key];
+            std::uint32_t vertex = Element::kNone;
+            for (std::uint32_t v : bucket)
+                if (dot(vertexNormals[v], e.normal) > 0.5f) vertex = v;
+            if (vertex == Element::kNone) {
+                vertex = static_cast<std::uint32_t>(vertexNormals.size());
+                vertexNormals.push_back(e.normal);
+                s.vertexIrradiance.emplace_back();
+                weights.push_back(0);
+                bucket.push_back(vertex);
+            }
+            s.faceVertices[i][k] = vertex;
+            weights[vertex] += e.area;
+            for (std::size_t side = 0; side < 2; ++side)
+                s.vertexIrradiance[vertex][side] += e.irradiance[side] * e.area;
+        }
+    }
+    for (std::size_t v = 0; v < weights.size(); ++v)
+        for (Color& c : s.vertexIrradiance[v])
+            c /= weights[v];
+    return s;
+}
+
+std::size_t RadiositySolver::subdivide(int level) {
+    const std::vector<std::uint32_t> leaves = mesh_.leaves();
+    const Smoothing smoothing = smooth(leaves);
+    float brightest = 0;
+    for (std::uint32_t e : leaves)
+        for (const Color& c : mesh_.elements[e].irradiance)
+            brightest = std::max(brightest, c.average());
+    // Differences among the darkest elements do not show.
+    const float floor = 1e-3f * brightest;
+    std::vector<std::uint32_t> children;
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const Element& e = mesh_.elements[leaves[i]];
+        if (e.level != level) continue;
+        bool jumps = false;
+        for (std::size_t side = 0; side < 2 && !jumps; ++side)
+            for (std::uint32_t v : smoothing.faceVertices[i]) {
+                const float here = e.irradiance[side].average();
+                const float there = smoothing.vertexIrradiance[v][side].average();
+                const float larger = std::max(here, there);
+                if (larger > floor &&
+                    std::abs(here - there) > settings_.subdivisionTolerance * larger)
+                    jumps = true;
+            }
+        if (!jumps) continue;
+        const std::uint32_t first = mesh_.split(leaves[i]);
+        for (std::uint32_t c = first; c < first + 4; ++c)
+            children.push_back(c);
+    }
+    for (std::uint32_t c : children) {
+        Element& child = mesh_.elements[c];
+        SurfaceProbe::place(mesh_.patches[child.patch], mesh_.corners(child), child);
+    }
+    std::vector<std::array<Color, 2>> E(children.size());
+    rays_ += parallelFor(children.size(), [&](std::size_t i, std::uint64_t& rays) {
+        E[i] = gather(mesh_.elements[children[i]], children[i], rays);
+    });
+    for (std::size_t i = 0; i < children.size(); ++i)
+        mesh_.elements[children[i]].irradiance = E[i];
+    return children.size() / 4;
+}
+
+void RadiositySolver::gatherAtVertices(const std::vector<std::uint32_t>& leaves,
+                                       Smoothing& smoothing) {
+    // Each vertex is gathered at, from the brightest of the leaves around it (so that a corner
+    // on a contact line takes the visible side's value), a point 2% of the way from the vertex to
+    // that leaf's centroid: inside the leaf, not on its edge.
+    struct Site {
+        std::uint32_t leaf = Element::kNone;
+        std::size_t corner = 0;
+        float brightness = -1;
+    };
+    std::vector<Site> sites(smoothing.vertexIrradiance.size());
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const Element& e = mesh_.elements[leaves[i]];
+        const float brightness = std::max(e.irradiance[0].average(), e.irradiance[1].average());
+        for (std::size_t k = 0; k < 3; ++k) {
+            Site& site = sites[smoothing.faceVertices[i][k]];
+            if (brightness > site.brightness) site = {leaves[i], k, brightness};
+        }
+    }
+    const auto key = static_cast<std::uint64_t>(mesh_.elements.size());
+    rays_ += parallelFor(sites.size(), [&](std::size_t v, std::uint64_t& rays) {
+        const Site& site = sites[v];
+        Element at = mesh_.elements[site.leaf];
+        Vec3 corner = mesh_.positions[at.vertices[site.corner]];
+        const Patch& patch = mesh_.patches[at.patch];
+        // A corner beyond another surface (a box's edge sunk into the floor) is gathered at
+        // halfway to that surface instead. (A curved patch's corners are on its own surface,
+        // which the chord to them would meet.)
+        if (!patch.curved) {
+            const Ray towards{at.surfacePoint, corner - at.surfacePoint};
+            Hit blocker;
+            ++rays;
+            if (scene_.intersect(towards, 1, blocker) && blocker.t > 1e-3f)
+                corner = at.surfacePoint + (0.5f * blocker.t) * towards.direction;
+        }
+        at.centroid = corner + 0.02f * (at.centroid - corner);
+        at.surfacePoint = at.centroid;
+        at.surfaceNormal = at.normal;
+        if (patch.curved)
+            if (const std::optional<Hit> hit = SurfaceProbe::at(patch, at.centroid)) {
+                at.surfacePoint = hit->p;
+                at.surfaceNormal = hit->ng;
+            }
+        smoothing.vertexIrradiance[v] = gather(at, key + v, rays);
+    });
+}
+
+RadiositySolution RadiositySolver::solve() {
+    const auto start = std::chrono::steady_clock::now();
+    for (Patch& p : mesh_.patches)
+        for (std::size_t side = 0; side < 2; ++side) {
+            p.unshot[side] = kPi * p.emission[side];  // B = pi L for a Lambertian emitter
+            for (std::uint32_t k = p.firstElement; k < p.firstElement + p.elementCount; ++k)
+                mesh_.elements[k].unshot[side] = p.unshot[side];
+        }
+    lightElements();
+
+    const std::vector<std::uint32_t> receivers = mesh_.leaves();
+    const double initial = mesh_.unshotPower().average();
+    initialPower_ = initial;
+    unshotHistory_ = {initial};
+    std::uint64_t shots = 0;
+    while (initial > 0 && unshotHistory_.back() > settings_.threshold * initial &&
+           shots < static_cast<std::uint64_t>(settings_.maxShots)) {
+        std::uint32_t best = 0;
+        Side bestSide = Side::Front;
+        float most = -1;
+        for (std::uint32_t i = 0; i < mesh_.patches.size(); ++i)
+            for (Side s : kBothSides) {
+                const float power =
+                    mesh_.patches[i].unshot[sideIndex(s)].average() * mesh_.patches[i].area;
+                if (power > most) {
+                    most = power;
+                    best = i;
+                    bestSide = s;
+                }
+            }
+        // The many weak shots of the end carry little light each: one ray is enough for their
+        // visibility (Wallace et al. 1989 likewise scale the rays with the shooter's power).
+        const bool strong = most >= kStrongShot * initial;
+        shoot(best, bestSide, strong ? settings_.visibilityRays : 1, receivers);
+        ++shots;
+        unshotHistory_.push_back(mesh_.unshotPower().average());
+    }
+
+    for (int level = 0; level < settings_.subdivisionLevels; ++level)
+        if (subdivide(level) == 0) break;
+
+    const std::vector<std::uint32_t> leaves = mesh_.leaves();
+    Smoothing smoothing = smooth(leaves);
+    gatherAtVertices(leaves, smoothing);
+    std::vector<std::array<Vec3, 3>> faces;
+    faces.reserve(leaves.size());
+    for (std::uint32_t e : leaves)
+        faces.push_back(mesh_.corners(mesh_.elements[e]));
+    float lookupDistance = 1e-4f * patchSize_;
+    for (const Patch& p : mesh_.patches)
+        lookupDistance = std::max(lookupDistance, p.probeDistance);
+
+    RadiosityStatistics statistics;
+    statistics.patches = mesh_.patches.size();
+    statistics.elements = leaves.size();
+    statistics.shots = shots;
+    statistics.initialPower = initial;
+    statistics.residualPower = unshotHistory_.back();
+    statistics.rays = rays_;
+    statistics.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return RadiositySolution(std::move(faces), std::move(smoothing.faceVertices),
+                             std::move(smoothing.vertexIrradiance), lookupDistance, fingerprint_,
+                             statistics);
+}
+
+}  // namespace lancer

@@ -1,0 +1,93 @@
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "radiosity/FormFactor.h"
+#include "radiosity/RadiosityMesh.h"
+#include "radiosity/RadiositySettings.h"
+#include "radiosity/RadiositySolution.h"
+
+namespace lancer {
+
+class Scene;
+
+// Progressive refinement radiosity (Cohen, Chen, Wallace and Greenberg 1988) over the scene's
+// patches and elements (PatchMesher):
+//  1. emissive patches start with their emitted radiosity unshot; the scene's lights (point,
+//     directional, spot, area) light every element first, through Light::sample with shadow rays,
+//     and what the elements reflect becomes their unshot radiosity;
+//  2. the patch side with the most unshot power shoots it to every element, each of its own
+//     elements shooting its share from where it is (form factors by ray casting, FormFactor), in
+//     parallel over the receiving elements, until the unshot power left is below the threshold
+//     times the power put in;
+//  3. adaptive subdivision: an element whose irradiance differs from its corners' (the average of
+//     the elements around them) by more than the tolerance is split in four, and the children
+//     gather again from the lights and from the radiosity every shooting element has shot;
+//     repeated per level;
+//  4. the irradiance at every corner of the final elements is gathered there (from the lights
+//     and everything shot), for the image's interpolation.
+// The result does not depend on the number of threads: each element's share of a shot is
+// computed on its own, from seeds of (patch, element), and added in element order.
+class RadiositySolver {
+public:
+    explicit RadiositySolver(const Scene& scene);
+
+    // A hash of what the solution depends on: the patches (geometry, reflectance, emission), the
+    // lights and the radiosity settings. Saved solutions are checked against it.
+    std::uint64_t fingerprint() const { return fingerprint_; }
+    const RadiosityMesh& mesh() const { return mesh_; }
+
+    RadiositySolution solve();
+
+    // The unshot power (W, mean over r, g, b) before the first shot and after each one.
+    const std::vector<double>& unshotHistory() const { return unshotHistory_; }
+
+    // The irradiance at a surface point (p with error bound on the surface of geometric normal
+    // ng) on the side n faces, from the scene's lights, shadows included: one sample of a delta
+    // light, `samples` stratified samples of the others.
+    static Color irradianceFromLights(const Scene& scene, const Vec3& p, const Vec3& ng,
+                                      const Vec3& n, int samples, std::uint64_t seed,
+                                      std::uint64_t& rayCount);
+
+private:
+    void lightElements();
+    // Shoots a patch side's unshot radiosity to the receivers, with `rays` rays per receiver
+    // (shared among the patch's elements).
+    void shoot(std::uint32_t patch, Side side, int rays,
+               const std::vector<std::uint32_t>& receivers);
+    // Splits the leaves of `level` whose irradiance jumps; returns how many were split.
+    std::size_t subdivide(int level);
+    // An element's irradiance gathered again: lights, then every shooting element's shot
+    // radiosity.
+    // `key` seeds its sample points.
+    std::array<Color, 2> gather(const Element& element, std::uint64_t key,
+                                std::uint64_t& rayCount) const;
+    std::array<Color, 2> lightIrradiance(const Element& element, std::uint64_t key,
+                                         std::uint64_t& rayCount) const;
+
+    // Per leaf, its corners' indices into shared vertices (welded by position, where the
+    // elements' normals agree within 60 degrees), and per vertex the area-weighted mean
+    // irradiance of the leaves around it.
+    struct Smoothing {
+        std::vector<std::array<std::uint32_t, 3>> faceVertices;
+        std::vector<std::array<Color, 2>> vertexIrradiance;
+    };
+    Smoothing smooth(const std::vector<std::uint32_t>& leaves) const;
+    // Replaces the vertices' averages by irradiance gathered at the vertices themselves (Wallace
+    // et al. 1989 evaluate at vertices): corners and contact lines come out right, where
+    // averaging the elements' centroid values smooths them away.
+    void gatherAtVertices(const std::vector<std::uint32_t>& leaves, Smoothing& smoothing);
+
+    const Scene& scene_;
+    RadiositySettings settings_;
+    float patchSize_;
+    RadiosityMesh mesh_;
+    FormFactor formFactor_;
+    std::uint64_t fingerprint_ = 0;
+    std::vector<double> unshotHistory_;
+    double initialPower_ = 0;  // the unshot power before the first shot
+    std::uint64_t rays_ = 0;
+};
+
+}  // namespace lancer

@@ -1,0 +1,53 @@
+#include "radiosity/SurfaceProbe.h"
+
+#include "geometry/Shape.h"
+#include "materials/Material.h"
+
+namespace lancer {
+
+std::optional<Hit> SurfaceProbe::at(const Patch& patch, const Vec3& point) {
+    const Ray ray{point + patch.probeDistance * patch.normal, -patch.normal};
+    Hit hit;
+    if (!patch.surface->intersect(ray, 2 * patch.probeDistance, hit)) return std::nullopt;
+    if (!hit.material) hit.material = patch.material;
+    return hit;
+}
+
+Vec3 SurfaceProbe::onSurface(const Patch& patch, const Vec3& point) {
+    if (!patch.curved) return point;
+    const std::optional<Hit> hit = at(patch, point);
+    return hit ? hit->p : point;
+}
+
+void SurfaceProbe::place(const Patch& patch, const std::array<Vec3, 3>& corners, Element& element) {
+    element.reflectance = reflectance(patch, corners);
+    if (!patch.curved) return;
+    if (const std::optional<Hit> hit = at(patch, element.centroid)) {
+        element.surfacePoint = hit->p;
+        element.surfaceNormal = hit->ng;
+    }
+}
+
+Color SurfaceProbe::reflectance(const Patch& patch, const std::array<Vec3, 3>& corners) {
+    constexpr float kNear = 4.0f / 6, kFar = 1.0f / 6;
+    const std::array<Vec3, 4> points{
+        (corners[0] + corners[1] + corners[2]) / 3.0f,
+        kNear * corners[0] + kFar * (corners[1] + corners[2]),
+        kNear * corners[1] + kFar * (corners[2] + corners[0]),
+        kNear * corners[2] + kFar * (corners[0] + corners[1]),
+    };
+    Color sum;
+    for (const Vec3& p : points) {
+        const std::optional<Hit> hit = at(patch, p);
+        if (hit) {
+            sum += hit->material->diffuse->evaluate(*hit);
+        } else {
+            Hit fallback;  // uv (0, 0): only textures see the difference
+            fallback.p = p;
+            sum += patch.material->diffuse->evaluate(fallback);
+        }
+    }
+    return sum / 4.0f;
+}
+
+}  // namespace lancer

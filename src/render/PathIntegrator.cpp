@@ -1,0 +1,115 @@
+#include "render/PathIntegrator.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "materials/Bsdf.h"
+#include "materials/Material.h"
+#include "render/Sampler.h"
+#include "scene/Scene.h"
+
+namespace lancer {
+
+namespace {
+
+// The power heuristic with beta = 2 (Veach 1997): the weight of a sample drawn with density a
+// when b is the other strategy's density for it.
+float powerHeuristic(float a, float b) {
+    if (std::isinf(a)) return 1;
+    const float a2 = a * a, b2 = b * b;
+    return a2 + b2 > 0 ? a2 / (a2 + b2) : 0;
+}
+
+}  // namespace
+
+PathIntegrator::PathIntegrator(const Scene& scene, int maxDepth)
+    : scene_(scene), maxDepth_(maxDepth), lights_(scene) {}
+
+Color PathIntegrator::sampleOneLight(const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
+                                     float uChoice, const Vec2& uLight,
+                                     std::uint64_t& rayCount) const {
+    const auto choice = lights_.choose(uChoice);
+    if (!choice) return Color(0);
+    const Light& light = *choice.value().light;
+    const LightSample ls = light.sample(hit.p, uLight);
+    const bool delta = light.isDelta();
+    if (ls.irradiance.isBlack() || (!delta && !(ls.pdf > 0))) return Color(0);
+    const Color f = bsdf.f(wo, ls.wi);
+    if (f.isBlack()) return Color(0);
+    // Shadow rays stop at the first surface: light through glass arrives by refracted paths.
+    const Ray shadow = ls.atInfinity ? hit.spawnRay(ls.wi) : hit.spawnRayTo(ls.position);
+    ++rayCount;
+    if (scene_.occluded(shadow, ls.atInfinity ? kInfinity : 1 - kShadowEpsilon)) return Color(0);
+    const float weight =
+        delta ? 1 : powerHeuristic(choice->probability * ls.pdf, bsdf.pdf(wo, ls.wi));
+    const float cosine = std::abs(dot(ls.wi, bsdf.shadingNormal()));
+    return f * ls.irradiance * (cosine * weight / choice->probability);
+}
+
+Color PathIntegrator::radiance(const Ray& cameraRay, float, Sampler& sampler,
+                               std::uint64_t& rayCount) const {
+    Color L, throughput(1);
+    // etaScale: the product of the eta^2 of the refractions so far, which Russian roulette
+    // takes out of the throughput (it measures the energy carried, not the radiance scale).
+    float etaScale = 1;
+    bool afterDelta = false;  // the last bounce was a delta lobe's
+    float lastBsdfPdf = 0;    // the density of the last bounce's direction
+    Vec3 lastVertex;
+    Ray ray = cameraRay;
+    for (int bounces = 0;; ++bounces) {
+        ++rayCount;
+        Hit hit;
+        if (!scene_.intersect(ray, kInfinity, hit)) {
+            L += throughput * scene_.background();
+            break;
+        }
+        const Material& material = *hit.material;
+        const Vec3 wo = -normalize(ray.direction);
+        if (!material.emission.isBlack() && (hit.frontFace(ray) || hit.shape->emitsOnBothSides())) {
+            float weight = 1;
+            // A BSDF ray hitting a light that light sampling could also have found.
+            if (bounces > 0 && !afterDelta) {
+                if (const Light* light = lights_.lightAt(hit)) {
+                    const float lightPdf =
+                        lights_.probability(light) * light->pdf(lastVertex, -wo, hit);
+                    weight = powerHeuristic(lastBsdfPdf, lightPdf);
+                }
+            }
+            L += throughput * material.emission * weight;
+        }
+        if (bounces >= maxDepth_) break;
+
+        // The same dimensions at every bounce, used or not, so that a pixel's samples stay
+        // stratified bounce by bounce.
+        const float uLightChoice = sampler.get1D();
+        const Vec2 uLight = sampler.get2D();
+        const float uLobe = sampler.get1D();
+        const Vec2 uBsdf = sampler.get2D();
+        const float uRoulette = sampler.get1D();
+
+        const Bsdf bsdf(material, hit);
+        if (bsdf.hasNonDeltaLobe())
+            L += throughput * sampleOneLight(hit, bsdf, wo, uLightChoice, uLight, rayCount);
+
+        const auto s = bsdf.sample(wo, uLobe, uBsdf);
+        if (!s || s->f.isBlack() || !(s->pdf > 0)) break;
+        throughput *= s->f * (std::abs(dot(s->wi, bsdf.shadingNormal())) / s->pdf);
+        etaScale *= s->etaSquared;
+        afterDelta = s->isDelta;
+        lastBsdfPdf = s->pdf;
+        lastVertex = hit.p;
+        ray = hit.spawnRay(s->wi);
+
+        if (bounces + 1 >= kRouletteDepth) {
+            const float survival = std::min(1.0f, (throughput * etaScale).maxComponent());
+            if (survival < 1) {
+                const float q = std::max(0.05f, 1 - survival);
+                if (uRoulette < q) break;
+                throughput /= 1 - q;
+            }
+        }
+    }
+    return L;
+}
+
+}  // namespace lancer

@@ -1,0 +1,140 @@
+#include "render/PixelEstimator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "render/Integrator.h"
+#include "render/Sampler.h"
+#include "scene/Scene.h"
+
+namespace lancer {
+
+namespace {
+
+double luminance(const Color& c) {
+    return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
+}
+
+// Sums of weighted samples: sum(w L), sum(w y) for the luminance y, and sum(w).
+struct WeightedSums {
+    double r = 0, g = 0, b = 0, y = 0, weight = 0;
+
+    void add(const Color& L, double y_, double w) {
+        r += w * L.r;
+        g += w * L.g;
+        b += w * L.b;
+        y += w * y_;
+        weight += w;
+    }
+};
+
+// Running sums of a pixel's weighted samples (in double: a pixel may take a million samples): the
+// filtered value sum(w L) / sum(w) and the standard error of its luminance.
+class WeightedMean {
+public:
+    void add(const Color& L, double w) {
+        const double y = luminance(L);
+        signed_.add(L, y, w);
+        magnitude_.add(L, y, std::abs(w));
+        squaredWeights_ += w * w;
+        squaredWeightsY_ += w * w * y;
+        squaredWeightsY2_ += w * w * y * y;
+        ++count_;
+    }
+
+    Color value() const {
+        const WeightedSums& s = sums();
+        return {static_cast<float>(s.r / s.weight), static_cast<float>(s.g / s.weight),
+                static_cast<float>(s.b / s.weight)};
+    }
+
+    double luminanceValue() const { return sums().y / sums().weight; }
+
+    // The standard error of the luminance estimate Y = sum(w y) / sum(w), from the samples'
+    // spread as if they were independent (the delta method for a ratio: the variance of
+    // w (y - Y), times n, over sum(w)^2). Stratified samples converge faster than that, but the
+    // estimate is large exactly where the pixel is noisy (edges, soft shadows, textures), which is
+    // what the stopping rule needs: it compares pixels with each other.
+    double standardError() const {
+        if (count_ < 2) return std::numeric_limits<double>::infinity();
+        const double y = luminanceValue();
+        const double spread =
+            std::max(0.0, squaredWeightsY2_ - 2 * y * squaredWeightsY_ + y * y * squaredWeights_);
+        const double n = static_cast<double>(count_);
+        return std::sqrt(spread * n / (n - 1)) / sums().weight;
+    }
+
+private:
+    // The weights sum to about the sample count (the filter integrates to 1, so a weight is 1 on
+    // average). With a negative-lobed filter (Mitchell) and very few samples, positive and
+    // negative weights can cancel to nearly nothing (two samples, one in a lobe) and blow the
+    // pixel up; then the pixel is averaged with the weights' magnitudes instead. Either way it is
+    // a weighted average, so a constant image stays constant. For a box every weight is 1.
+    const WeightedSums& sums() const {
+        return signed_.weight >= 0.5 * static_cast<double>(count_) ? signed_ : magnitude_;
+    }
+
+    WeightedSums signed_, magnitude_;
+    double squaredWeights_ = 0, squaredWeightsY_ = 0, squaredWeightsY2_ = 0;
+    long long count_ = 0;
+};
+
+}  // namespace
+
+PixelEstimator::PixelEstimator(const Scene& scene, const Integrator& integrator)
+    : scene_(scene),
+      integrator_(integrator),
+      filterSampler_(Filter::create(scene.settings().filter)),
+      maxSamples_(scene.settings().samplesPerPixel) {
+    const std::optional<AdaptiveSettings>& adaptive = scene.settings().adaptive;
+    batchSize_ = adaptive ? std::min(adaptive->minSamples, maxSamples_) : maxSamples_;
+    threshold_ = adaptive ? adaptive->threshold : 0.0;
+}
+
+Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters& counters) const {
+    const RenderSettings& settings = scene_.settings();
+    const Camera& camera = scene_.camera();
+    // Each of n samples covers about 1/sqrt(n) of the pixel's width (n: the most samples the pixel
+    // may take); the floor keeps some texture filtering at very high counts (as pbrt does).
+    const float pixelSpread = camera.pixelSpreadAngle(settings.height) *
+                              std::max(0.125f, 1 / std::sqrt(static_cast<float>(maxSamples_)));
+    Sampler sampler(seed, x, y);
+    WeightedMean mean;
+    int n = 0;
+    for (int target = batchSize_;; target = std::min(target + batchSize_, maxSamples_)) {
+        for (; n < target; ++n) {
+            sampler.startSample(n);
+            const Vec2 filterPoint = sampler.get2D();
+            // A single sample goes through the pixel centre, as a classic ray tracer's.
+            const FilterSample film =
+                maxSamples_ == 1 ? FilterSample{{0, 0}, 1} : filterSampler_.sample(filterPoint);
+            const Vec2 lens = sampler.get2D();
+            const Ray ray = camera.generateRay(static_cast<float>(x) + 0.5f + film.offset.x,
+                                               static_cast<float>(y) + 0.5f + film.offset.y,
+                                               settings.width, settings.height, lens);
+            Color L = integrator_.radiance(ray, pixelSpread, sampler, counters.rays);
+            // One NaN or infinity would spoil the pixel for good: the sample counts as black
+            // (as pbrt does), and is counted for --stats.
+            if (!L.isFinite()) {
+                ++counters.nonFiniteSamples;
+                L = Color();
+            }
+            mean.add(L, film.weight);
+        }
+        if (n >= maxSamples_) break;
+        // The error is relative to the pixel's luminance, so that the threshold means the same
+        // in bright and dim parts of the image; but below kDarkLuminanceFloor (a quarter of the
+        // display's range once sRGB-encoded), relative to the floor. Without it a nearly black
+        // pixel, whose relative error is large but invisible, would always take max_spp; a
+        // dark pixel that some samples find bright (a gap onto a light) still has a large error
+        // against the floor and is not starved.
+        const double scale = std::max(mean.luminanceValue(), kDarkLuminanceFloor);
+        if (mean.standardError() <= threshold_ * scale) break;
+    }
+    counters.samples += static_cast<std::uint64_t>(n);
+    ++counters.pixels;
+    return mean.value();
+}
+
+}  // namespace lancer

@@ -1,0 +1,38 @@
+#pragma once
+
+#include <cstdint>
+
+#include "math/Color.h"
+#include "render/FilterSampler.h"
+#include "render/RenderCounters.h"
+
+namespace lancer {
+
+class Integrator;
+class Scene;
+
+// The value of one pixel: its samples (Sampler), their positions and weights under the
+// reconstruction filter (FilterSampler), and, with adaptive sampling, when to stop. A pixel
+// depends only on (seed, pixel): its samples are numbered from 0 and the stopping rule sees only
+// them.
+class PixelEstimator {
+public:
+    // Reads the scene's render settings (filter, spp, adaptive) once; the camera at each call.
+    PixelEstimator(const Scene& scene, const Integrator& integrator);
+
+    Color estimate(int x, int y, std::uint64_t seed, RenderCounters& counters) const;
+
+    // Below this luminance the adaptive threshold applies to the error relative to this floor
+    // rather than to the pixel's own (tiny) value; see estimate().
+    static constexpr double kDarkLuminanceFloor = 0.05;
+
+private:
+    const Scene& scene_;
+    const Integrator& integrator_;
+    FilterSampler filterSampler_;
+    int maxSamples_;
+    int batchSize_;     // the first batch is min_spp; without adaptive sampling, all at once
+    double threshold_;  // 0 without adaptive sampling
+};
+
+}  // namespace lancer

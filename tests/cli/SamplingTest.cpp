@@ -1,0 +1,179 @@
+// The render block's sampling keys end to end: every reconstruction filter keeps a constant
+// image constant; adaptive sampling is deterministic whatever the threads, reports its mean
+// sample count, and takes its budget from spp / max_spp / --spp; NaN and infinite samples are
+// dropped and counted by --stats.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+#include <string>
+#include <vector>
+
+#include "LancerRun.h"
+
+namespace lancer::test {
+namespace {
+
+std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+// The camera inside a sphere that emits `emission` and reflects nothing: every ray, whatever
+// its direction, sees the same radiance, so every pixel must be exactly that.
+nlohmann::json insideAnEmissiveSphere(const nlohmann::json& renderExtras) {
+    nlohmann::json scene = {
+        {"render", {{"width", 24}, {"height", 18}, {"spp", 16}, {"max_depth", 2}}},
+        {"camera", {{"position", {0, 0, 0}}, {"look_at", {0, 0, -1}}, {"vfov", 90}}},
+        {"materials", {{"lamp", {{"diffuse", 0}, {"emission", {0.25, 0.5, 2.0}}}}}},
+        {"objects",
+         {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 3}, {"material", "lamp"}}}}};
+    scene["render"].update(renderExtras);
+    return scene;
+}
+
+struct FilterCase {
+    std::string name;
+    nlohmann::json render;  // keys added to the "render" block
+};
+
+std::ostream& operator<<(std::ostream& out, const FilterCase& c) {
+    return out << c.name;
+}
+
+class CliConstantImage : public testing::TestWithParam<FilterCase> {};
+
+TEST_P(CliConstantImage, EveryPixelIsTheEmission) {
+    const Image image = renderScene(insideAnEmissiveSphere(GetParam().render)).image;
+    const double expected[3] = {0.25, 0.5, 2.0};
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                // sum(w L) / sum(w) with a constant L: only rounding.
+                ASSERT_NEAR(image.at(x, y)[static_cast<std::size_t>(c)], expected[c],
+                            2e-6 * expected[c])
+                    << "pixel " << x << "," << y << " channel " << c;
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Filters, CliConstantImage,
+    testing::Values(
+        FilterCase{"Default", nlohmann::json::object()}, FilterCase{"Box", {{"filter", "box"}}},
+        FilterCase{"WideBox", {{"filter", {{"type", "box"}, {"radius", 1.5}}}}},
+        FilterCase{"Tent", {{"filter", "tent"}}}, FilterCase{"Gaussian", {{"filter", "gaussian"}}},
+        FilterCase{"NarrowGaussian", {{"filter", {{"type", "gaussian"}, {"radius", 0.6}}}}},
+        FilterCase{"Mitchell", {{"filter", "mitchell"}}},
+        FilterCase{"WideMitchell", {{"filter", {{"type", "mitchell"}, {"radius", 3}}}}},
+        FilterCase{"MitchellFewSamples", {{"filter", "mitchell"}, {"spp", 2}}},
+        FilterCase{"AdaptiveMitchell",
+                   {{"filter", "mitchell"},
+                    {"spp", 64},
+                    {"adaptive", {{"min_spp", 4}, {"threshold", 0.001}}}}}),
+    CaseName());
+
+// Runs lancer on `scene` (not quiet) and returns the run, after checking it succeeded.
+RunResult runOn(const nlohmann::json& scene, const std::vector<std::string>& options) {
+    const TempFolder folder;
+    folder.write("scene.json", scene.dump(2));
+    const RunResult run =
+        runLancer(concat({"scene.json", "-o", "out.pfm"}, options), folder.path());
+    EXPECT_EQ(run.exitStatus, 0) << run;
+    return run;
+}
+
+// The summary line's "M spp on average (adaptive, A to B)", as (M, A, B); nothing if absent.
+std::optional<std::array<double, 3>> adaptiveSummary(const RunResult& run) {
+    static const std::regex pattern(
+        R"(([0-9.]+) spp on average \(adaptive, ([0-9]+) to ([0-9]+)\))");
+    std::smatch match;
+    if (!std::regex_search(run.standardError, match, pattern)) return std::nullopt;
+    return std::array<double, 3>{std::stod(match[1]), std::stod(match[2]), std::stod(match[3])};
+}
+
+nlohmann::json adaptiveWhitted(const nlohmann::json& adaptive) {
+    nlohmann::json scene = loadWhittedScene();
+    scene["render"].erase("spp");
+    scene["render"]["adaptive"] = adaptive;
+    return scene;
+}
+
+const std::vector<std::string> kSmall{"--width", "96", "--height", "72"};
+
+TEST(CliAdaptive, OneAndTwoThreadsWriteByteIdenticalFiles) {
+    const nlohmann::json scene = adaptiveWhitted({{"min_spp", 4}, {"max_spp", 64}});
+    for (const char* filter : {"box", "mitchell"}) {
+        nlohmann::json filtered = scene;
+        filtered["render"]["filter"] = filter;
+        const std::string one = renderScene(filtered, concat(kSmall, {"--threads", "1"})).bytes;
+        const std::string two = renderScene(filtered, concat(kSmall, {"--threads", "2"})).bytes;
+        EXPECT_TRUE(one == two) << "the files differ (" << filter << ")";
+    }
+}
+
+TEST(CliAdaptive, SummaryGivesTheMeanSamplesTakenWithinTheRange) {
+    const RunResult run = runOn(adaptiveWhitted({{"min_spp", 4}, {"max_spp", 64}}), kSmall);
+    const auto summary = adaptiveSummary(run);
+    ASSERT_TRUE(summary) << run.standardError;
+    EXPECT_EQ((*summary)[1], 4);
+    EXPECT_EQ((*summary)[2], 64);
+    // Most of the Whitted scene is flat (sky, the insides of squares and spheres): far fewer
+    // samples than max_spp on average, but more than min_spp (its edges).
+    EXPECT_GT((*summary)[0], 4);
+    EXPECT_LT((*summary)[0], 32);
+}
+
+TEST(CliAdaptive, SppOptionSetsMaxSppAndLowersMinSppToIt) {
+    const nlohmann::json scene = adaptiveWhitted({{"min_spp", 16}, {"max_spp", 256}});
+    const auto lowered = adaptiveSummary(runOn(scene, concat(kSmall, {"--spp", "8"})));
+    ASSERT_TRUE(lowered);
+    EXPECT_EQ((*lowered)[1], 8);
+    EXPECT_EQ((*lowered)[2], 8);
+    EXPECT_EQ((*lowered)[0], 8) << "min_spp = max_spp: every pixel takes 8";
+    const auto raised = adaptiveSummary(runOn(scene, concat(kSmall, {"--spp", "32"})));
+    ASSERT_TRUE(raised);
+    EXPECT_EQ((*raised)[1], 16);
+    EXPECT_EQ((*raised)[2], 32);
+}
+
+TEST(CliAdaptive, TheRenderSppIsTheBudgetWhenMaxSppIsNotGiven) {
+    nlohmann::json scene = adaptiveWhitted({{"min_spp", 2}});
+    scene["render"]["spp"] = 8;
+    const auto summary = adaptiveSummary(runOn(scene, kSmall));
+    ASSERT_TRUE(summary);
+    EXPECT_EQ((*summary)[1], 2);
+    EXPECT_EQ((*summary)[2], 8);
+}
+
+TEST(CliAdaptive, UniformSamplingSaysSpp) {
+    const RunResult run = runOn(loadWhittedScene(), concat(kSmall, {"--spp", "4"}));
+    EXPECT_FALSE(adaptiveSummary(run));
+    EXPECT_NE(run.standardError.find(", 4 spp, "), std::string::npos) << run.standardError;
+}
+
+TEST(CliNonFiniteSamples, AreDroppedAndCountedByStats) {
+    // Seen from inside, a mirror that emits 3e38 reflects itself: 3e38 + 3e38 overflows to
+    // infinity in every sample.
+    const nlohmann::json scene = {
+        {"render", {{"width", 6}, {"height", 4}, {"spp", 3}, {"max_depth", 1}}},
+        {"camera", {{"position", {0, 0, 0}}, {"look_at", {0, 0, -1}}}},
+        {"materials", {{"hot", {{"diffuse", 0}, {"emission", 3e38}, {"reflection", 1}}}}},
+        {"objects",
+         {{{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 10}, {"material", "hot"}}}}};
+    const TempFolder folder;
+    folder.write("scene.json", scene.dump(2));
+    const RunResult run =
+        runLancer({"scene.json", "-o", "out.pfm", "--stats", "--quiet"}, folder.path());
+    ASSERT_EQ(run.exitStatus, 0) << run;
+    // One camera ray and one reflected ray per sample.
+    EXPECT_NE(
+        run.standardError.find("stats: 144 rays, 72 samples, 72 of them NaN or infinite (dropped)"),
+        std::string::npos)
+        << run.standardError;
+    const Image image = loadImage(folder / "out.pfm");
+    for (const Image::Rgb& pixel : image.pixels)
+        EXPECT_EQ(pixel, (Image::Rgb{0, 0, 0})) << "a dropped sample counts as black";
+}
+
+}  // namespace
+}  // namespace lancer::test
