@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cstdlib>
 #include <optional>
+#include <ostream>
 #include <thread>
 
 #include "LancerRun.h"
@@ -151,6 +152,21 @@ TEST_F(LiveWindow, SSavesWhatTheWindowShowsNextToTheOutput) {
 
 // A render of many seconds, stopped once some of its tiles are done.
 enum class Stop { ClosingTheWindow, Escape, CtrlC };
+constexpr const char* nameOf(Stop stop) {
+    switch (stop) {
+        case Stop::ClosingTheWindow:
+            return "ByClosingTheWindow";
+        case Stop::Escape:
+            return "ByEscape";
+        case Stop::CtrlC:
+            return "ByCtrlC";
+    }
+    return "";
+}
+// Names the parameter in test listings (gtest prints raw bytes otherwise).
+void PrintTo(Stop stop, std::ostream* out) {
+    *out << nameOf(stop);
+}
 class StoppedMidRender : public LiveWindow, public testing::WithParamInterface<Stop> {};
 
 TEST_P(StoppedMidRender, SavesTheFinishedTilesAndExits130AsCtrlCDoes) {
@@ -196,15 +212,7 @@ TEST_P(StoppedMidRender, SavesTheFinishedTilesAndExits130AsCtrlCDoes) {
 INSTANTIATE_TEST_SUITE_P(LiveWindow, StoppedMidRender,
                          testing::Values(Stop::ClosingTheWindow, Stop::Escape, Stop::CtrlC),
                          [](const testing::TestParamInfo<Stop>& test) {
-                             switch (test.param) {
-                                 case Stop::ClosingTheWindow:
-                                     return "ByClosingTheWindow";
-                                 case Stop::Escape:
-                                     return "ByEscape";
-                                 case Stop::CtrlC:
-                                     return "ByCtrlC";
-                             }
-                             return "";
+                             return nameOf(test.param);
                          });
 
 TEST_F(LiveWindow, DraggingOrbitsAndTheWheelZoomsWithoutTouchingTheOutput) {
