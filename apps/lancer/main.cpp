@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <CLI/CLI.hpp>
+#include <tbb/global_control.h>
 #include <algorithm>
 #include <atomic>
 #include <csignal>
@@ -125,6 +126,11 @@ std::string describeRate(std::uint64_t rays, double seconds) {
 // The radiosity integrator with its solution, solved or loaded (and saved if asked), reported in
 // one line.
 std::unique_ptr<Integrator> prepareRadiosity(const Scene& scene, const Options& options) {
+    // The solve runs on oneTBB's workers: no more of them than --threads allows.
+    std::optional<tbb::global_control> threadLimit;
+    if (options.threads > 0)
+        threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
+                            static_cast<std::size_t>(options.threads));
     RadiositySolver solver(scene);
     RadiositySolution solution;
     if (options.loadRadiosity) {

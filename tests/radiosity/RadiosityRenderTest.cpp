@@ -60,9 +60,9 @@ TEST(RadiosityRender, ClosedBoxFurnace) {
 // The Cornell box of ../shared/references (Mitsuba 3.9.1's, as a lancer scene) with the given
 // radiosity settings, rendered with the radiosity integrator.
 Image renderCornell(const json& radiosity, int spp) {
-    json scene = json::parse(
-        readFile(fs::path(LANCER_SHARED_DIR) / "references/cornell/cornell.json"), nullptr, true,
-        true);
+    json scene =
+        json::parse(readFile(fs::path(LANCER_SHARED_DIR) / "references/cornell/cornell.json"),
+                    nullptr, true, true);
     scene["radiosity"] = radiosity;
     const TempFolder folder;
     folder.write("scene.json", scene.dump());
@@ -166,6 +166,12 @@ TEST(RadiosityRender, SavedSolutionGivesTheSameImages) {
                   files.folder.path());
     ASSERT_EQ(reused.exitStatus, 0) << reused;
     EXPECT_EQ(readFile(files.folder / "c.pfm"), readFile(files.folder / "d.pfm"));
+}
+
+TEST(RadiosityRender, SameImageWhateverTheThreadCount) {
+    // --threads bounds the solve's workers as well as the render's.
+    EXPECT_EQ(renderScene(smallScene(), {"--threads", "1"}).bytes,
+              renderScene(smallScene(), {"--threads", "2"}).bytes);
 }
 
 struct LoadErrorCase {
