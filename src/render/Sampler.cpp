@@ -1,7 +1,5 @@
 #include "render/Sampler.h"
 
-#include <array>
-
 #include "render/Sampling.h"
 
 namespace lancer {
@@ -29,28 +27,23 @@ std::uint32_t laineKarrasPermutation(std::uint32_t x, std::uint32_t seed) {
     return x;
 }
 
-// Owen scrambling of a 0.32 fixed-point value: bit i (from the top) is flipped as a hash of the
-// bits above it, which keeps every elementary interval's points inside one elementary interval.
-std::uint32_t nestedUniformScramble(std::uint32_t x, std::uint32_t seed) {
-    return reverseBits(laineKarrasPermutation(reverseBits(x), seed));
-}
+// Owen scrambling of a 0.32 fixed-point value x is reverseBits(laineKarrasPermutation(
+// reverseBits(x), seed)): bit i (from the top) is flipped as a hash of the bits above it, which
+// keeps every elementary interval's points inside one elementary interval. The code below works
+// on bit-reversed values where it can, to skip reversals that would cancel.
 
-// Generator matrix columns of Sobol's second dimension (primitive polynomial x + 1): Pascal's
-// triangle mod 2, v_k = v_(k-1) ^ (v_(k-1) >> 1). The first dimension is the bit reversal of the
-// index (van der Corput).
-constexpr std::array<std::uint32_t, 32> kSobolDimension1 = [] {
-    std::array<std::uint32_t, 32> v{};
-    v[0] = 0x80000000u;
-    for (std::size_t k = 1; k < v.size(); ++k)
-        v[k] = v[k - 1] ^ (v[k - 1] >> 1);
-    return v;
-}();
-
-std::uint32_t sobolDimension1(std::uint32_t index) {
-    std::uint32_t x = 0;
-    for (std::size_t k = 0; index != 0; index >>= 1, ++k)
-        if (index & 1u) x ^= kSobolDimension1[k];
-    return x;
+// Sobol's second dimension (primitive polynomial x + 1), bit-reversed. Its generator matrix is
+// Pascal's triangle mod 2 (column k is the top bit times (1 + shift right)^k), so bit i from the
+// top is the parity of the index bits k with C(k, i) odd: by Lucas's theorem, of the k whose bits
+// include all of i's. That parity over supersets takes one step per bit of i. (The first
+// dimension is the bit reversal of the index, van der Corput.)
+std::uint32_t reversedSobolDimension1(std::uint32_t index) {
+    index ^= (index >> 1) & 0x55555555u;
+    index ^= (index >> 2) & 0x33333333u;
+    index ^= (index >> 4) & 0x0f0f0f0fu;
+    index ^= (index >> 8) & 0x00ff00ffu;
+    index ^= index >> 16;
+    return index;
 }
 
 // The top 24 bits as a float in [0,1): exact, so truncation keeps every point in the elementary
@@ -62,33 +55,56 @@ float toUnitFloat(std::uint32_t x) {
 }  // namespace
 
 Sampler::Sampler(std::uint64_t seed, int pixelX, int pixelY)
-    : pixelSeed_(hashValues(seed, pixelX, pixelY)) {}
+    : pixelHash_(beginHash(hashValues(seed, pixelX, pixelY))) {}
 
 void Sampler::startSample(int index) {
-    sampleIndex_ = static_cast<std::uint32_t>(index);
-    dimension_ = 0;
+    reversedIndex_ = reverseBits(static_cast<std::uint32_t>(index));
+    request_ = 0;
 }
 
-std::uint64_t Sampler::requestSeed() {
-    return hashValues(pixelSeed_, dimension_++);
+Sampler::RequestSeeds Sampler::hashRequestSeeds(int request, RequestKind kind) const {
+    const std::uint64_t seed = extendHash(pixelHash_, static_cast<std::uint64_t>(request));
+    if (kind == RequestKind::value)
+        return {{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), 0},
+                kind};
+    const std::uint64_t partsHash = beginHash(seed);
+    const auto seedOf = [&](std::uint64_t part) {
+        return static_cast<std::uint32_t>(extendHash(partsHash, part));
+    };
+    return {{seedOf(0), seedOf(1), seedOf(2)}, kind};
+}
+
+Sampler::RequestSeeds Sampler::nextRequestSeeds(RequestKind kind) {
+    const int request = request_++;
+    if (request < cachedRequestCount_) {
+        const RequestSeeds& cached = cachedRequests_[static_cast<std::size_t>(request)];
+        if (cached.kind == kind) return cached;
+        return hashRequestSeeds(request, kind);
+    }
+    const RequestSeeds seeds = hashRequestSeeds(request, kind);
+    if (request < kCachedRequests) {
+        cachedRequests_[static_cast<std::size_t>(request)] = seeds;
+        ++cachedRequestCount_;
+    }
+    return seeds;
 }
 
 Vec2 Sampler::get2D() {
-    const std::uint64_t seed = requestSeed();
-    const auto seedOf = [&](int part) {
-        return static_cast<std::uint32_t>(hashValues(seed, part));
-    };
-    const std::uint32_t index = nestedUniformScramble(sampleIndex_, seedOf(0));
-    return {toUnitFloat(nestedUniformScramble(reverseBits(index), seedOf(1))),
-            toUnitFloat(nestedUniformScramble(sobolDimension1(index), seedOf(2)))};
+    const auto [indexSeed, xSeed, ySeed] = nextRequestSeeds(RequestKind::point).seeds;
+    // The Owen-scrambled sample index picks the Sobol point. Its x, the index reversed, is
+    // scrambled by reversing it back (the index itself), permuting and reversing; its y likewise
+    // from the reversed second dimension.
+    const std::uint32_t index = reverseBits(laineKarrasPermutation(reversedIndex_, indexSeed));
+    return {
+        toUnitFloat(reverseBits(laineKarrasPermutation(index, xSeed))),
+        toUnitFloat(reverseBits(laineKarrasPermutation(reversedSobolDimension1(index), ySeed)))};
 }
 
 float Sampler::get1D() {
-    const std::uint64_t seed = requestSeed();
-    const auto low = static_cast<std::uint32_t>(seed),
-               high = static_cast<std::uint32_t>(seed >> 32);
-    return toUnitFloat(
-        nestedUniformScramble(reverseBits(nestedUniformScramble(sampleIndex_, low)), high));
+    const auto [indexSeed, valueSeed, unused] = nextRequestSeeds(RequestKind::value).seeds;
+    // The scrambled index, reversed, is the van der Corput point, which is then scrambled.
+    const std::uint32_t point = laineKarrasPermutation(reversedIndex_, indexSeed);
+    return toUnitFloat(reverseBits(laineKarrasPermutation(reverseBits(point), valueSeed)));
 }
 
 }  // namespace lancer

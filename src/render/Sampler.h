@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 
 #include "math/Vec2.h"
@@ -28,11 +29,29 @@ public:
     float get1D();
 
 private:
-    std::uint64_t requestSeed();
+    enum class RequestKind : std::uint8_t { point, value };
 
-    std::uint64_t pixelSeed_;
-    std::uint32_t sampleIndex_ = 0;
-    int dimension_ = 0;
+    // The scramble seeds of one request: for a point, those of the sample index and of its two
+    // coordinates; for a value, those of the index and of the value (the third is unused).
+    struct RequestSeeds {
+        std::array<std::uint32_t, 3> seeds;
+        RequestKind kind;
+    };
+
+    // Hashing the seeds costs more than scrambling with them, and they depend only on the pixel
+    // and the request: the pixel's samples share them, hashed by the first sample that makes the
+    // request. The cache covers the requests of a few dozen bounces or area lights; the rest are
+    // hashed each time, as is a request whose kind differs from the one cached.
+    static constexpr int kCachedRequests = 256;
+
+    RequestSeeds nextRequestSeeds(RequestKind kind);
+    RequestSeeds hashRequestSeeds(int request, RequestKind kind) const;
+
+    std::uint64_t pixelHash_;  // the hash chain after (seed, pixel), each request extends it
+    std::uint32_t reversedIndex_ = 0;  // the sample index, bit-reversed
+    int request_ = 0;
+    int cachedRequestCount_ = 0;
+    std::array<RequestSeeds, kCachedRequests> cachedRequests_;  // filled in request order
 };
 
 }  // namespace lancer

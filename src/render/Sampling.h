@@ -43,10 +43,20 @@ inline std::uint64_t mixBits(std::uint64_t v) {
     return v;
 }
 
+// The chain's two steps, for callers that hash many values after a common prefix once:
+// hashValues(a, b) == extendHash(beginHash(a), b).
+inline std::uint64_t beginHash(std::uint64_t first) {
+    return mixBits(first + 0x9e3779b97f4a7c15ULL);
+}
+
+inline std::uint64_t extendHash(std::uint64_t hash, std::uint64_t next) {
+    return mixBits(hash ^ (next + 0x9e3779b97f4a7c15ULL));
+}
+
 template <typename... Ts>
 std::uint64_t hashValues(std::uint64_t first, Ts... rest) {
-    std::uint64_t h = mixBits(first + 0x9e3779b97f4a7c15ULL);
-    ((h = mixBits(h ^ (static_cast<std::uint64_t>(rest) + 0x9e3779b97f4a7c15ULL))), ...);
+    std::uint64_t h = beginHash(first);
+    ((h = extendHash(h, static_cast<std::uint64_t>(rest))), ...);
     return h;
 }
 

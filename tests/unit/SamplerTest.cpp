@@ -267,5 +267,69 @@ TEST(SamplerTest, RequestsOfOnePixelAreUncorrelatedAcrossSamples) {
     EXPECT_LT(std::abs(correlation(a, c)), bound);
 }
 
+// The numbers of one sample: `count` requests, a 1D one wherever (request + index) % 3 == 0 and
+// 2D ones elsewhere, so that consecutive samples make different kinds of request at a position.
+std::vector<float> requestsOfSample(Sampler& sampler, int index, int count) {
+    sampler.startSample(index);
+    std::vector<float> numbers;
+    for (int request = 0; request < count; ++request) {
+        if ((request + index) % 3 == 0) {
+            numbers.push_back(sampler.get1D());
+        } else {
+            const Vec2 p = sampler.get2D();
+            numbers.insert(numbers.end(), {p.x, p.y});
+        }
+    }
+    return numbers;
+}
+
+// The sampler keeps the scramble seeds of a pixel's requests from one sample to the next; a
+// sample's numbers must still be those of a fresh sampler, whatever the samples before it asked
+// for (more requests than are kept, requests of another kind at the same position).
+TEST(SamplerTest, ManyRequestsOfEitherKindDoNotDependOnEarlierSamples) {
+    constexpr int kRequests = 400;
+    Sampler reused(9, 7, 2);
+    for (int index = 0; index < 8; ++index) {
+        const std::vector<float> numbers = requestsOfSample(reused, index, kRequests + index * 40);
+        Sampler fresh(9, 7, 2);
+        EXPECT_EQ(numbers, requestsOfSample(fresh, index, kRequests + index * 40))
+            << "sample " << index;
+    }
+}
+
+// Every image depends on these numbers: a change to the hashing or the scrambling, even one that
+// keeps the sampler's properties, changes every render (and the references compared against).
+// The values are those of the first implementation; exact, as a float's bits are.
+TEST(SamplerTest, KeepsItsNumbers) {
+    struct Expected {
+        int index;
+        Vec2 first;
+        float value;
+        Vec2 second;
+    };
+    const Expected expected[] = {
+        {0, {0x1.ce8ebp-2f, 0x1.8a8094p-2f}, 0x1.992b22p-1f, {0x1.8d6d54p-2f, 0x1.b41e5p-4f}},
+        {1, {0x1.3e361p-1f, 0x1.8cab58p-1f}, 0x1.e0e6p-4f, {0x1.ec91eap-1f, 0x1.d759f2p-1f}},
+        {5, {0x1.c96bd8p-1f, 0x1.3424e8p-1f}, 0x1.c48618p-3f, {0x1.5ca382p-1f, 0x1.072cb8p-1f}},
+        {1000, {0x1.62f9b8p-1f, 0x1.ab259p-1f}, 0x1.323712p-1f, {0x1.aac81p-3f, 0x1.1f87b2p-1f}},
+        {123456789,
+         {0x1.c43194p-1f, 0x1.1513a2p-1f},
+         0x1.7f7572p-1f,
+         {0x1.fb32cep-1f, 0x1.6818eap-1f}},
+    };
+    for (const Expected& e : expected) {
+        Sampler sampler(42, 3, 5);
+        sampler.startSample(e.index);
+        const Vec2 first = sampler.get2D();
+        const float value = sampler.get1D();
+        const Vec2 second = sampler.get2D();
+        EXPECT_EQ(first.x, e.first.x) << "sample " << e.index;
+        EXPECT_EQ(first.y, e.first.y) << "sample " << e.index;
+        EXPECT_EQ(value, e.value) << "sample " << e.index;
+        EXPECT_EQ(second.x, e.second.x) << "sample " << e.index;
+        EXPECT_EQ(second.y, e.second.y) << "sample " << e.index;
+    }
+}
+
 }  // namespace
 }  // namespace lancer
