@@ -15,6 +15,7 @@
 #include <string>
 
 #include "LiveRender.h"
+#include "LiveSolve.h"
 #include "ProgressBar.h"
 #include "Viewer.h"
 #include "io/ImageWriter.h"
@@ -124,8 +125,10 @@ std::string describeRate(std::uint64_t rays, double seconds) {
 }
 
 // The radiosity integrator with its solution, solved or loaded (and saved if asked), reported in
-// one line.
-std::unique_ptr<Integrator> prepareRadiosity(const Scene& scene, const Options& options) {
+// one line; the solve's progress shows in the viewer, if any. Null when the solve was stopped
+// (Ctrl-C, or the window closed).
+std::unique_ptr<Integrator> prepareRadiosity(const Scene& scene, const Options& options,
+                                             Viewer* viewer) {
     // The solve runs on oneTBB's workers: no more of them than --threads allows.
     std::optional<tbb::global_control> threadLimit;
     if (options.threads > 0)
@@ -140,7 +143,11 @@ std::unique_ptr<Integrator> prepareRadiosity(const Scene& scene, const Options& 
                              "this radiosity solution was solved for another scene (its geometry, "
                              "materials, lights or \"radiosity\" settings differ)");
     } else {
-        solution = solver.solve();
+        std::optional<RadiositySolution> solved =
+            viewer ? LiveSolve(*viewer, scene, solver, options.threads).run(interruptRequested)
+                   : solver.solve({}, &interruptRequested);
+        if (!solved) return nullptr;
+        solution = std::move(*solved);
     }
     if (options.saveRadiosity) solution.save(*options.saveRadiosity);
     if (!options.quiet) {
@@ -197,14 +204,33 @@ int run(const Options& options) {
         if (!renderOptions.crop) return usageError(error);
     }
 
+    if ((options.saveRadiosity || options.loadRadiosity) && settings.integrator != "radiosity")
+        return usageError("--save-radiosity and --load-radiosity need --integrator radiosity");
+
+    std::unique_ptr<Viewer> viewer;
+    if (options.window) {
+        std::string error;
+        viewer = Viewer::open("lancer: " + fs::path(options.scene).filename().string(),
+                              settings.width, settings.height, error);
+        if (!viewer && !options.quiet)
+            std::cerr << "lancer: warning: --window: " << error << "; rendering without it\n";
+    }
+
+    // From here on Ctrl-C stops the radiosity solve, then the render.
+    std::signal(SIGINT, onInterrupt);
     std::unique_ptr<Integrator> integrator;
     try {
-        if ((options.saveRadiosity || options.loadRadiosity) && settings.integrator != "radiosity")
-            return usageError("--save-radiosity and --load-radiosity need --integrator radiosity");
-        integrator = settings.integrator == "radiosity" ? prepareRadiosity(scene, options)
-                                                        : Integrator::create(scene);
+        integrator = settings.integrator == "radiosity"
+                         ? prepareRadiosity(scene, options, viewer.get())
+                         : Integrator::create(scene);
     } catch (const std::invalid_argument& e) {
         return usageError(e.what());
+    }
+    if (!integrator) {
+        std::signal(SIGINT, SIG_DFL);
+        // Nothing was rendered: no image is written (nor any solution), and no file is left.
+        std::cerr << "lancer: interrupted during the radiosity solve; nothing was written\n";
+        return kExitInterrupted;
     }
 
     // Writes the image as soon as its render ends; returns the exit status.
@@ -224,17 +250,7 @@ int run(const Options& options) {
         return 0;
     };
 
-    std::unique_ptr<Viewer> viewer;
-    if (options.window) {
-        std::string error;
-        viewer = Viewer::open("lancer: " + fs::path(options.scene).filename().string(),
-                              settings.width, settings.height, error);
-        if (!viewer && !options.quiet)
-            std::cerr << "lancer: warning: --window: " << error << "; rendering without it\n";
-    }
-
     renderOptions.cancel = &interruptRequested;
-    std::signal(SIGINT, onInterrupt);
     if (viewer) {
         // The window stays open after the render, until closed; Ctrl-C closes it too.
         const int status = LiveRender(*viewer, scene, *integrator, renderOptions, output,

@@ -29,20 +29,6 @@ std::uint64_t fold(std::uint64_t h, const Color& c) {
     return fold(fold(fold(h, c.r), c.g), c.b);
 }
 
-// Runs body(i, rayCount) for i in [0, count) on all threads, and adds up the rays.
-template <typename Body>
-std::uint64_t parallelFor(std::size_t count, const Body& body) {
-    std::atomic<std::uint64_t> rays{0};
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                          std::uint64_t local = 0;
-                          for (std::size_t i = range.begin(); i != range.end(); ++i)
-                              body(i, local);
-                          rays += local;
-                      });
-    return rays;
-}
-
 // A shot carrying at least this fraction of the power put in traces all its visibility rays.
 constexpr double kStrongShot = 1e-3;
 
@@ -54,6 +40,20 @@ constexpr double kMostTaken = 1.1;
 constexpr int kAreaLightSamples = 16;
 
 }  // namespace
+
+template <typename Body>
+std::uint64_t RadiositySolver::parallelFor(std::size_t count, const Body& body) const {
+    std::atomic<std::uint64_t> rays{0};
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          if (cancelled()) return;
+                          std::uint64_t local = 0;
+                          for (std::size_t i = range.begin(); i != range.end(); ++i)
+                              body(i, local);
+                          rays += local;
+                      });
+    return rays;
+}
 
 RadiositySolver::RadiositySolver(const Scene& scene)
     : scene_(scene), settings_(scene.settings().radiosity), patchSize_(0), formFactor_(scene) {
@@ -362,7 +362,30 @@ void RadiositySolver::gatherAtVertices(const std::vector<std::uint32_t>& leaves,
 }
 
 RadiositySolution RadiositySolver::solve() {
+    return *solve({}, nullptr);
+}
+
+std::optional<RadiositySolution> RadiositySolver::solve(
+    const std::function<void(const RadiosityProgress&)>& onProgress,
+    const std::atomic<bool>* cancel) {
     const auto start = std::chrono::steady_clock::now();
+    cancel_ = cancel;
+    RadiosityProgress progress;
+    // Reports where the solve is; false once it is cancelled.
+    const auto carryOn = [&](RadiosityProgress::Phase phase) {
+        if (cancelled()) return false;
+        if (onProgress) {
+            progress.phase = phase;
+            progress.shots = shots_;
+            progress.unshotPower = unshotHistory_.back();
+            progress.initialPower = initialPower_;
+            progress.seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            onProgress(progress);
+        }
+        return !cancelled();
+    };
+
     for (Patch& p : mesh_.patches)
         for (std::size_t side = 0; side < 2; ++side) {
             p.unshot[side] = kPi * p.emission[side];  // B = pi L for a Lambertian emitter
@@ -375,9 +398,10 @@ RadiositySolution RadiositySolver::solve() {
     const double initial = mesh_.unshotPower().average();
     initialPower_ = initial;
     unshotHistory_ = {initial};
-    std::uint64_t shots = 0;
+    shots_ = 0;
+    if (!carryOn(RadiosityProgress::Phase::Shooting)) return std::nullopt;
     while (initial > 0 && unshotHistory_.back() > settings_.threshold * initial &&
-           shots < static_cast<std::uint64_t>(settings_.maxShots)) {
+           shots_ < static_cast<std::uint64_t>(settings_.maxShots)) {
         std::uint32_t best = 0;
         Side bestSide = Side::Front;
         float most = -1;
@@ -395,16 +419,49 @@ RadiositySolution RadiositySolver::solve() {
         // visibility (Wallace et al. 1989 likewise scale the rays with the shooter's power).
         const bool strong = most >= kStrongShot * initial;
         shoot(best, bestSide, strong ? settings_.visibilityRays : 1, receivers);
-        ++shots;
+        ++shots_;
         unshotHistory_.push_back(mesh_.unshotPower().average());
+        if (!carryOn(RadiosityProgress::Phase::Shooting)) return std::nullopt;
     }
 
-    for (int level = 0; level < settings_.subdivisionLevels; ++level)
+    for (int level = 0; level < settings_.subdivisionLevels; ++level) {
+        if (!carryOn(RadiosityProgress::Phase::Subdividing)) return std::nullopt;
         if (subdivide(level) == 0) break;
+    }
 
+    if (!carryOn(RadiosityProgress::Phase::Gathering)) return std::nullopt;
     const std::vector<std::uint32_t> leaves = mesh_.leaves();
     Smoothing smoothing = smooth(leaves);
     gatherAtVertices(leaves, smoothing);
+    if (cancelled()) return std::nullopt;
+
+    RadiosityStatistics statistics;
+    statistics.patches = mesh_.patches.size();
+    statistics.elements = leaves.size();
+    statistics.shots = shots_;
+    statistics.initialPower = initial;
+    statistics.residualPower = unshotHistory_.back();
+    statistics.rays = rays_;
+    statistics.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return makeSolution(leaves, std::move(smoothing), statistics);
+}
+
+RadiositySolution RadiositySolver::snapshot() const {
+    const std::vector<std::uint32_t> leaves = mesh_.leaves();
+    RadiosityStatistics statistics;
+    statistics.patches = mesh_.patches.size();
+    statistics.elements = leaves.size();
+    statistics.shots = shots_;
+    statistics.initialPower = initialPower_;
+    statistics.residualPower = unshotHistory_.empty() ? 0 : unshotHistory_.back();
+    statistics.rays = rays_;
+    return makeSolution(leaves, smooth(leaves), statistics);
+}
+
+RadiositySolution RadiositySolver::makeSolution(const std::vector<std::uint32_t>& leaves,
+                                                Smoothing smoothing,
+                                                const RadiosityStatistics& statistics) const {
     std::vector<std::array<Vec3, 3>> faces;
     faces.reserve(leaves.size());
     for (std::uint32_t e : leaves)
@@ -412,16 +469,6 @@ RadiositySolution RadiositySolver::solve() {
     float lookupDistance = 1e-4f * patchSize_;
     for (const Patch& p : mesh_.patches)
         lookupDistance = std::max(lookupDistance, p.probeDistance);
-
-    RadiosityStatistics statistics;
-    statistics.patches = mesh_.patches.size();
-    statistics.elements = leaves.size();
-    statistics.shots = shots;
-    statistics.initialPower = initial;
-    statistics.residualPower = unshotHistory_.back();
-    statistics.rays = rays_;
-    statistics.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return RadiositySolution(std::move(faces), std::move(smoothing.faceVertices),
                              std::move(smoothing.vertexIrradiance), lookupDistance, fingerprint_,
                              statistics);

@@ -1,10 +1,14 @@
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <vector>
 
 #include "radiosity/FormFactor.h"
 #include "radiosity/RadiosityMesh.h"
+#include "radiosity/RadiosityProgress.h"
 #include "radiosity/RadiositySettings.h"
 #include "radiosity/RadiositySolution.h"
 
@@ -39,6 +43,17 @@ public:
     const RadiosityMesh& mesh() const { return mesh_; }
 
     RadiositySolution solve();
+    // The same solve, reporting to `onProgress` (if any) on the solving thread between its steps:
+    // before the first shot, after each shot, before each subdivision level and before the
+    // final gather. The solution is the same with or without it (it may call snapshot(), which
+    // changes nothing). Once `cancel` (if any) is set, the solve stops within a fraction of a
+    // shot and returns nothing; the solver is then not to be used again.
+    std::optional<RadiositySolution> solve(
+        const std::function<void(const RadiosityProgress&)>& onProgress,
+        const std::atomic<bool>* cancel);
+    // The solution as it stands, for a preview during the solve (from onProgress): the leaves'
+    // irradiance averaged at their corners, without the final gather.
+    RadiositySolution snapshot() const;
 
     // The unshot power (W, mean over r, g, b) before the first shot and after each one.
     const std::vector<double>& unshotHistory() const { return unshotHistory_; }
@@ -78,6 +93,13 @@ private:
     // et al. 1989 evaluate at vertices): corners and contact lines come out right, where
     // averaging the elements' centroid values smooths them away.
     void gatherAtVertices(const std::vector<std::uint32_t>& leaves, Smoothing& smoothing);
+    RadiositySolution makeSolution(const std::vector<std::uint32_t>& leaves, Smoothing smoothing,
+                                   const RadiosityStatistics& statistics) const;
+    bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+    // Runs body(i, rayCount) for i in [0, count) on all threads, and adds up the rays. Once the
+    // solve is cancelled, the ranges not started yet are skipped (it is being abandoned).
+    template <typename Body>
+    std::uint64_t parallelFor(std::size_t count, const Body& body) const;
 
     const Scene& scene_;
     RadiositySettings settings_;
@@ -88,6 +110,8 @@ private:
     std::vector<double> unshotHistory_;
     double initialPower_ = 0;  // the unshot power before the first shot
     std::uint64_t rays_ = 0;
+    std::uint64_t shots_ = 0;
+    const std::atomic<bool>* cancel_ = nullptr;  // the solve's, while it runs
 };
 
 }  // namespace lancer

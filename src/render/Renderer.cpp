@@ -75,7 +75,8 @@ RenderResult Renderer::render(const RenderOptions& options) const {
     const RenderSettings& settings = scene_.settings();
     const PixelWindow window =
         options.crop.value_or(PixelWindow{0, 0, settings.width, settings.height});
-    const std::vector<PixelWindow> tiles = cutIntoTiles(window, kTileSize);
+    const std::vector<PixelWindow> tiles =
+        options.previewOnly ? std::vector<PixelWindow>{} : cutIntoTiles(window, kTileSize);
 
     RenderResult result{Film(settings.width, settings.height)};
     result.threads = options.threads > 0

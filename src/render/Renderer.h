@@ -41,6 +41,9 @@ struct RenderOptions {
     // through the centre of each k x k block and fills the block with it. None by default; they
     // never change the image.
     std::vector<int> previewBlockSizes;
+    // Render the preview passes only, none of the image's tiles (a live view's quick look at
+    // something that will change, such as a radiosity solution while it is solved).
+    bool previewOnly = false;
     // Called under a lock after each tile, preview tiles included, in the order they finish;
     // every tile of a pass is reported before any of the next pass.
     std::function<void(const FinishedTile&)> onTileDone;

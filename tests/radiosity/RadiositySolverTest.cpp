@@ -1,10 +1,12 @@
 // The solver: furnaces (closed sphere and box of uniform albedo and emission, whose exact answer
 // is known), convergence of progressive refinement, energy balance, adaptive subdivision where
-// a shadow falls, and independence from the thread count.
+// a shadow falls, independence from the thread count, and the progress reports and cancellation
+// that lancer --window and Ctrl-C use.
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
 
+#include <atomic>
 #include <cmath>
 
 #include "RadiosityTestSupport.h"
@@ -137,6 +139,105 @@ TEST(RadiositySolverTest, SameSolutionWhateverTheThreadCount) {
         return values;
     };
     EXPECT_TRUE(solve(1) == solve(2));
+}
+
+// The irradiance the solution gives at every leaf's centroid, both sides, and its statistics.
+std::vector<Color> sampleSolution(const RadiositySolver& solver,
+                                  const RadiositySolution& solution) {
+    std::vector<Color> values;
+    for (const Element& e : solver.mesh().elements) {
+        if (!e.isLeaf()) continue;
+        for (const Vec3& side : {e.normal, -e.normal})
+            values.push_back(solution.irradiance(e.centroid, e.normal, side).value_or(Color(-1)));
+    }
+    const RadiosityStatistics& s = solution.statistics();
+    values.push_back(Color(static_cast<float>(s.shots), static_cast<float>(s.elements),
+                           static_cast<float>(s.residualPower)));
+    return values;
+}
+
+TEST(RadiositySolverTest, ProgressReportsAndSnapshotsLeaveTheSolutionAsIs) {
+    Scene plainScene = furnaceBox(), watchedScene = furnaceBox();
+    RadiositySolver plain(plainScene), watched(watchedScene);
+    const RadiositySolution expected = plain.solve();
+
+    std::vector<RadiosityProgress> reports;
+    std::vector<std::size_t> snapshotFaces;
+    const std::optional<RadiositySolution> solution = watched.solve(
+        [&](const RadiosityProgress& progress) {
+            reports.push_back(progress);
+            snapshotFaces.push_back(watched.snapshot().faceCount());
+        },
+        nullptr);
+    ASSERT_TRUE(solution);
+    EXPECT_TRUE(sampleSolution(watched, *solution) == sampleSolution(plain, expected))
+        << "the same solution, bit for bit, with or without the reports";
+
+    // Before the first shot, after each one, before each subdivision level, before the gather.
+    const std::uint64_t shots = expected.statistics().shots;
+    ASSERT_GT(shots, 5u);
+    ASSERT_GE(reports.size(), shots + 2);
+    for (std::uint64_t k = 0; k <= shots; ++k) {
+        EXPECT_EQ(reports[k].phase, RadiosityProgress::Phase::Shooting);
+        EXPECT_EQ(reports[k].shots, k);
+        EXPECT_EQ(reports[k].unshotPower, plain.unshotHistory()[k]);
+        EXPECT_GT(reports[k].initialPower, 0);
+    }
+    EXPECT_EQ(reports[shots + 1].phase, RadiosityProgress::Phase::Subdividing);
+    EXPECT_EQ(reports.back().phase, RadiosityProgress::Phase::Gathering);
+    EXPECT_EQ(reports.back().unshotPower, expected.statistics().residualPower);
+    for (std::size_t k = 1; k < reports.size(); ++k)
+        EXPECT_GE(reports[k].seconds, reports[k - 1].seconds);
+    EXPECT_EQ(snapshotFaces.front(), snapshotFaces[shots]) << "shooting does not split elements";
+    EXPECT_EQ(snapshotFaces.back(), expected.faceCount()) << "the gather neither";
+}
+
+TEST(RadiositySolverTest, ASnapshotShowsTheLightShotSoFar) {
+    Scene scene = furnaceBox();
+    RadiositySolver solver(scene);
+    std::vector<float> centre;  // the floor's centre's irradiance, at each shot
+    solver.solve(
+        [&](const RadiosityProgress& progress) {
+            if (progress.phase != RadiosityProgress::Phase::Shooting) return;
+            const auto E =
+                solver.snapshot().irradiance(Vec3(0.5f, 0, 0.5f), Vec3(0, 1, 0), Vec3(0, 1, 0));
+            ASSERT_TRUE(E);
+            centre.push_back(E->r);
+        },
+        nullptr);
+    ASSERT_GT(centre.size(), 2u);
+    EXPECT_EQ(centre.front(), 0) << "before the first shot, nothing has arrived (no lights)";
+    EXPECT_GT(centre.back(), centre[1]) << "the light adds up shot after shot";
+    for (std::size_t k = 1; k < centre.size(); ++k)
+        EXPECT_GE(centre[k], centre[k - 1]);
+}
+
+TEST(RadiositySolverTest, CancellingStopsBeforeTheNextShot) {
+    Scene scene = furnaceBox();
+    RadiositySolver solver(scene);
+    std::atomic<bool> cancel{false};
+    std::uint64_t lastShots = 0;
+    int reports = 0;
+    const std::optional<RadiositySolution> solution = solver.solve(
+        [&](const RadiosityProgress& progress) {
+            ++reports;
+            lastShots = progress.shots;
+            if (progress.shots == 3) cancel = true;
+        },
+        &cancel);
+    EXPECT_FALSE(solution);
+    EXPECT_EQ(lastShots, 3u);
+    EXPECT_EQ(reports, 4) << "no shot after the cancel";
+}
+
+TEST(RadiositySolverTest, CancelledBeforeTheStartNothingIsShot) {
+    Scene scene = furnaceBox();
+    RadiositySolver solver(scene);
+    const std::atomic<bool> cancel{true};
+    int reports = 0;
+    EXPECT_FALSE(solver.solve([&](const RadiosityProgress&) { ++reports; }, &cancel));
+    EXPECT_EQ(reports, 0);
+    EXPECT_EQ(solver.unshotHistory().size(), 1u);
 }
 
 }  // namespace

@@ -1,7 +1,8 @@
 // lancer --window end to end, on a virtual X server (Xvfb) of the test's own: the window shows
 // the saved image once the render ends, S saves snapshots, closing the window or Esc stops the
-// render as Ctrl-C does, dragging and the wheel move the camera, and without a display the
-// render goes on without a window.
+// render as Ctrl-C does, dragging and the wheel move the camera, a radiosity solve shows its
+// progress and can be stopped the same way, and without a display the render goes on without a
+// window.
 
 #include <X11/keysym.h>
 #include <gtest/gtest.h>
@@ -210,6 +211,97 @@ TEST_P(StoppedMidRender, SavesTheFinishedTilesAndExits130AsCtrlCDoes) {
 }
 
 INSTANTIATE_TEST_SUITE_P(LiveWindow, StoppedMidRender,
+                         testing::Values(Stop::ClosingTheWindow, Stop::Escape, Stop::CtrlC),
+                         [](const testing::TestParamInfo<Stop>& test) {
+                             return nameOf(test.param);
+                         });
+
+// The Whitted scene with the radiosity integrator and `radiosity` settings.
+nlohmann::json radiosityScene(const nlohmann::json& radiosity) {
+    nlohmann::json scene = loadWhittedScene();
+    scene["render"]["integrator"] = "radiosity";
+    scene["radiosity"] = radiosity;
+    return scene;
+}
+
+// A solve of under a second in a release build (521 patches, about 380 shots), all of it shooting.
+const nlohmann::json kQuickSolve = {
+    {"patch_size", 1}, {"subdivision_levels", 0}, {"threshold", 0.02}};
+// A solve of many seconds (about 7 s in a release build), to be stopped.
+const nlohmann::json kLongSolve = {{"patch_size", 1}};
+
+TEST_F(LiveWindow, ShowsTheRadiositySolveThenTheRenderOfItsSolution) {
+    folder_.write("scene.json", radiosityScene(kQuickSolve).dump());
+    LancerProcess lancer(withWindow(quickRender("out.png")), folder_.path());
+    const X11Window window = findWindow();
+
+    // While it solves, the title gives the phase, the shots and the power left, and the window
+    // shows previews of the solution as it stands (the scene's lights light it at once).
+    bool sawProgress = false, sawPreview = false;
+    const auto deadline = std::chrono::steady_clock::now() + kWait;
+    std::string title;
+    while ((title = window.title()).find("done") == std::string::npos &&
+           std::chrono::steady_clock::now() < deadline) {
+        if (title.find("radiosity: shooting") != std::string::npos) {
+            sawProgress = true;
+            EXPECT_NE(title.find(" shots, unshot "), std::string::npos) << title;
+            const Image shown = window.screenshot();
+            sawPreview |= std::any_of(shown.pixels.begin(), shown.pixels.end(),
+                                      [](const Image::Rgb& p) { return p[0] + p[1] + p[2] > 0; });
+        }
+        std::this_thread::sleep_for(10ms);
+    }
+    EXPECT_TRUE(sawProgress) << "the title showed the solve";
+    EXPECT_TRUE(sawPreview) << "the window showed the solution as it stood";
+    ASSERT_TRUE(window.waitForTitle("done", kWait)) << "title: " << window.title();
+    ASSERT_TRUE(fs::exists(folder_ / "out.png"));
+    EXPECT_EQ(maxAbsoluteDifference(window.screenshot(), loadImage(folder_ / "out.png")), 0)
+        << "the window ends on the saved image";
+
+    window.close();
+    const RunResult run = lancer.wait(kWait);
+    EXPECT_EQ(run.exitStatus, 0) << run;
+    EXPECT_NE(run.standardError.find("lancer: radiosity: "), std::string::npos) << run;
+    EXPECT_EQ(folder_.entries(), (std::vector<std::string>{"out.png", "scene.json"}));
+
+    // The same solution and image as without the window, bit for bit.
+    const RunResult plain = runLancer(quickRender("plain.png"), folder_.path());
+    ASSERT_EQ(plain.exitStatus, 0) << plain;
+    EXPECT_EQ(readFile(folder_ / "plain.png"), readFile(folder_ / "out.png"));
+}
+
+class StoppedMidSolve : public LiveWindow, public testing::WithParamInterface<Stop> {};
+
+TEST_P(StoppedMidSolve, WritesNothingAndExits130) {
+    folder_.write("scene.json", radiosityScene(kLongSolve).dump());
+    LancerProcess lancer(withWindow(quickRender("out.png")), folder_.path());
+    const X11Window window = findWindow();
+    ASSERT_TRUE(window.waitForTitle("radiosity: shooting", kWait)) << "title: " << window.title();
+
+    const auto stopped = std::chrono::steady_clock::now();
+    switch (GetParam()) {
+        case Stop::ClosingTheWindow:
+            window.close();
+            break;
+        case Stop::Escape:
+            window.pressKey(XK_Escape);
+            break;
+        case Stop::CtrlC:
+            lancer.sendSignal(SIGINT);
+            break;
+    }
+    const RunResult run = lancer.wait(kWait);
+    // The solver stops between shots (each a few milliseconds, more under sanitizers).
+    EXPECT_LT(std::chrono::steady_clock::now() - stopped, 5s);
+
+    EXPECT_EQ(run.exitStatus, 130) << run;
+    EXPECT_EQ(run.errorLines(), (std::vector<std::string>{"lancer: interrupted during the "
+                                                          "radiosity solve; nothing was written"}))
+        << run;
+    EXPECT_EQ(folder_.entries(), (std::vector<std::string>{"scene.json"}));
+}
+
+INSTANTIATE_TEST_SUITE_P(LiveWindow, StoppedMidSolve,
                          testing::Values(Stop::ClosingTheWindow, Stop::Escape, Stop::CtrlC),
                          [](const testing::TestParamInfo<Stop>& test) {
                              return nameOf(test.param);
