@@ -25,6 +25,14 @@ inline void DLL_CALLCONV recordFreeImageMessage(FREE_IMAGE_FORMAT, const char* m
     lastFreeImageMessage() = message ? message : "";
 }
 
+// The scanline of a FreeImage bitmap that holds image row y (rows counted from the top). FreeImage
+// stores rows bottom-up, scanline 0 at the bottom, except that its PFM plugin reads and writes the
+// file's first row as the top one, while PFM stores the bottom row first (netpbm's and Debevec's
+// definition, which Mitsuba and pbrt follow): bitmaps of PFM files are upside down.
+inline unsigned scanlineOfRow(FREE_IMAGE_FORMAT format, int y, int height) {
+    return static_cast<unsigned>(format == FIF_PFM ? y : height - 1 - y);
+}
+
 // Call before a FreeImage operation whose failure should be explained.
 inline void startCapturingFreeImageMessages() {
     FreeImage_SetOutputMessage(recordFreeImageMessage);

@@ -238,8 +238,8 @@ Image ImageReader::read(const std::filesystem::path& path) {
     const int height = static_cast<int>(FreeImage_GetHeight(bitmap.get()));
     Image image(width, height);
     for (int y = 0; y < height; ++y) {
-        // FreeImage stores rows bottom-up: image row y is scanline height - 1 - y.
-        const BYTE* scanline = FreeImage_GetScanLine(bitmap.get(), height - 1 - y);
+        const BYTE* scanline =
+            FreeImage_GetScanLine(bitmap.get(), scanlineOfRow(format, y, height));
         for (int x = 0; x < width; ++x) {
             const Color c = floatTexel(type, scanline, x);
             image.at(x, y) =

@@ -46,13 +46,12 @@ const Format* findFormat(const std::filesystem::path& path) {
     return nullptr;
 }
 
-// FreeImage stores rows bottom-up: film row y is scanline height - 1 - y.
-FreeImageBitmap toLinearBitmap(const Film& film) {
+FreeImageBitmap toLinearBitmap(const Film& film, FREE_IMAGE_FORMAT format) {
     FreeImageBitmap bitmap(FreeImage_AllocateT(FIT_RGBF, film.width(), film.height()));
     if (!bitmap) return bitmap;
     for (int y = 0; y < film.height(); ++y) {
-        auto* row =
-            reinterpret_cast<FIRGBF*>(FreeImage_GetScanLine(bitmap.get(), film.height() - 1 - y));
+        auto* row = reinterpret_cast<FIRGBF*>(
+            FreeImage_GetScanLine(bitmap.get(), scanlineOfRow(format, y, film.height())));
         for (int x = 0; x < film.width(); ++x) {
             const Color& c = film.pixel(x, y);
             row[x] = {c.r, c.g, c.b};
@@ -61,11 +60,11 @@ FreeImageBitmap toLinearBitmap(const Film& film) {
     return bitmap;
 }
 
-FreeImageBitmap toSrgbBitmap(const Film& film) {
+FreeImageBitmap toSrgbBitmap(const Film& film, FREE_IMAGE_FORMAT format) {
     FreeImageBitmap bitmap(FreeImage_Allocate(film.width(), film.height(), 24));
     if (!bitmap) return bitmap;
     for (int y = 0; y < film.height(); ++y) {
-        BYTE* row = FreeImage_GetScanLine(bitmap.get(), film.height() - 1 - y);
+        BYTE* row = FreeImage_GetScanLine(bitmap.get(), scanlineOfRow(format, y, film.height()));
         for (int x = 0; x < film.width(); ++x, row += 3) {
             const Color& c = film.pixel(x, y);
             row[FI_RGBA_RED] = linearToSrgb8(c.r);
@@ -94,7 +93,8 @@ void ImageWriter::write(const Film& film, const std::filesystem::path& path) {
     if (!format) throw std::runtime_error(path.string() + ": unsupported image format");
 
     startCapturingFreeImageMessages();
-    const FreeImageBitmap bitmap = format->linear ? toLinearBitmap(film) : toSrgbBitmap(film);
+    const FreeImageBitmap bitmap =
+        format->linear ? toLinearBitmap(film, format->fif) : toSrgbBitmap(film, format->fif);
     if (!bitmap) throw std::runtime_error(path.string() + ": out of memory for the image");
 
     // A unique name beside the target, so that the final rename stays within one file system.

@@ -162,7 +162,40 @@ void recordFreeImageMessage(FREE_IMAGE_FORMAT, const char* message) {
 
 }  // namespace
 
+namespace {
+
+// A PFM file read by the netpbm definition, independently of FreeImage: "PF" (RGB) or "Pf"
+// (grey), width and height, a scale whose sign gives the byte order (negative: little-endian),
+// then the rows of 32-bit floats, the BOTTOM row first.
+Image loadPfm(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::string magic;
+    double scale = 0;
+    Image image;
+    if (!(in >> magic >> image.width >> image.height >> scale) ||
+        (magic != "PF" && magic != "Pf") || image.width <= 0 || image.height <= 0 || scale >= 0)
+        throw std::runtime_error(path.string() + ": not a little-endian PFM file");
+    in.get();  // the single whitespace character that ends the header
+    const int channels = magic == "PF" ? 3 : 1;
+    std::vector<float> values(static_cast<std::size_t>(image.width * image.height * channels));
+    if (!in.read(reinterpret_cast<char*>(values.data()),
+                 static_cast<std::streamsize>(values.size() * sizeof(float))))
+        throw std::runtime_error(path.string() + ": PFM file shorter than its header says");
+    image.pixels.resize(static_cast<std::size_t>(image.width * image.height));
+    for (int row = 0; row < image.height; ++row)
+        for (int x = 0; x < image.width; ++x) {
+            const float* v = &values[static_cast<std::size_t>((row * image.width + x) * channels)];
+            const int y = image.height - 1 - row;
+            image.pixels[static_cast<std::size_t>(y * image.width + x)] =
+                channels == 3 ? Image::Rgb{v[0], v[1], v[2]} : Image::Rgb{v[0], v[0], v[0]};
+        }
+    return image;
+}
+
+}  // namespace
+
 Image loadImage(const fs::path& path) {
+    if (path.extension() == ".pfm") return loadPfm(path);
     FreeImage_SetOutputMessage(recordFreeImageMessage);
     lastFreeImageMessage.clear();
     const std::string name = path.string();

@@ -75,7 +75,8 @@ struct Image {
     const Rgb& at(int x, int y) const { return pixels[static_cast<std::size_t>(y * width + x)]; }
 };
 
-// Loads an image in any format FreeImage reads; throws std::runtime_error when it cannot.
+// Loads an image in any format FreeImage reads (PFM by our own reading of the netpbm
+// definition, as FreeImage gets its row order wrong); throws std::runtime_error when it cannot.
 Image loadImage(const fs::path& path);
 
 // The largest |a - b| over all channels of two images of the same size.

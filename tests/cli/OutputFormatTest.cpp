@@ -134,5 +134,27 @@ INSTANTIATE_TEST_SUITE_P(
                     FormatCase{"Tif", "out.tif", Image::Encoding::EightBit, 0}),
     CaseName());
 
+// The image the right way up in every format: a floor below the horizon, the sky above. PFM is
+// the trap: it stores the bottom row first, which FreeImage's PFM writer gets wrong (loadImage
+// reads PFM by the netpbm definition, not through FreeImage).
+TEST(CliOutputOrientation, EveryFormatHasTheSkyAtTheTop) {
+    const nlohmann::json scene = nlohmann::json::parse(R"({
+      "render": { "width": 4, "height": 6, "spp": 1 },
+      "camera": { "position": [0, 1, 0], "look_at": [0, 1, -1], "vfov": 90 },
+      "background": [0, 0, 1],
+      "ambient": [1, 1, 1],
+      "materials": { "floor": { "diffuse": [1, 0, 0] } },
+      "objects": [ { "type": "plane", "point": [0, 0, 0], "normal": [0, 1, 0],
+                     "material": "floor" } ]
+    })");
+    for (const char* output : {"out.pfm", "out.exr", "out.png"}) {
+        const Image image = renderScene(scene, {}, output).image;
+        EXPECT_EQ(image.at(0, 0)[0], 0) << output << ": top row is sky";
+        EXPECT_GT(image.at(0, 0)[2], 0) << output << ": top row is sky";
+        EXPECT_GT(image.at(0, 5)[0], 0) << output << ": bottom row is floor";
+        EXPECT_EQ(image.at(0, 5)[2], 0) << output << ": bottom row is floor";
+    }
+}
+
 }  // namespace
 }  // namespace lancer::test

@@ -49,4 +49,8 @@ Bitmap makeBitmapFloat(const Image& image);
 // write.
 void save(const Bitmap& bitmap, const fs::path& path, FREE_IMAGE_FORMAT format, int flags = 0);
 
+// Writes a PFM file as the netpbm definition has it (little-endian, the bottom row first), without
+// FreeImage, whose PFM writer stores the top row first.
+void writePfm(const Image& image, const fs::path& path);
+
 }  // namespace lancer::test
