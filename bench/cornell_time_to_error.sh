@@ -19,4 +19,5 @@ if [[ " $* " != *" --lancer "* ]]; then
 fi
 DRJIT_LIBLLVM_PATH=$(dpkg -L libllvm19 | grep -m1 '/libLLVM-19\.so$')
 export DRJIT_LIBLLVM_PATH
+export PYTHONDONTWRITEBYTECODE=1  # no __pycache__ in bench/ from importing image_error.py
 exec "$venv/bin/python" bench/cornell_time_to_error.py "$@"
