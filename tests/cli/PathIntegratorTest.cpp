@@ -407,12 +407,9 @@ TEST(PathAgainstMitsuba, CornellBoxMatchesTheReferenceWithinItsNoise) {
     EXPECT_NEAR(meanValue(first) / meanValue(reference), 1.0, 0.01);
 }
 
-// The stored block averages are those of the full reference beside the repository, when it is
-// there (the benchmark reads the full one).
+// The stored block averages are those of the full reference (copied beside them).
 TEST(PathAgainstMitsuba, StoredBlocksAreTheFullReferenceAveraged) {
-    const fs::path full =
-        fs::path(LANCER_SOURCE_DIR) / "../shared/references/cornell/mitsuba-path-16384spp.exr";
-    if (!fs::exists(full)) GTEST_SKIP() << full << " is not there";
+    const fs::path full = kCornellFolder / "mitsuba-path-16384spp.exr";
     const Image stored = loadImage(kCornellFolder / "mitsuba-path-16384spp-8x8-blocks.pfm");
     const Image averaged = blockAverage(loadImage(full), kBlock);
     ASSERT_EQ(stored.width, averaged.width);

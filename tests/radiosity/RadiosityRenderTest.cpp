@@ -57,12 +57,12 @@ TEST(RadiosityRender, ClosedBoxFurnace) {
                   0.2 / (1 - 0.5));
 }
 
-// The Cornell box of ../shared/references (Mitsuba 3.9.1's, as a lancer scene) with the given
+// The Cornell box of ../shared/references (Mitsuba 3.9.1's, as a lancer scene; copied with its
+// reference image into tests/cli/data/cornell) with the given
 // radiosity settings, rendered with the radiosity integrator.
 Image renderCornell(const json& radiosity, int spp) {
     json scene =
-        json::parse(readFile(fs::path(LANCER_SHARED_DIR) / "references/cornell/cornell.json"),
-                    nullptr, true, true);
+        json::parse(readFile(fs::path(LANCER_CORNELL_DIR) / "cornell.json"), nullptr, true, true);
     scene["radiosity"] = radiosity;
     const TempFolder folder;
     folder.write("scene.json", scene.dump());
@@ -112,8 +112,7 @@ TEST(RadiosityRender, CornellBoxAgainstMitsuba) {
     // darkening along corners and contact lines finer than the elements, elements straddling
     // shadow edges, one visibility ray per weak shooter, and the residual unshot 1% against the
     // reference's cut at 7 bounces.
-    const Image reference =
-        loadImage(fs::path(LANCER_SHARED_DIR) / "references/cornell/mitsuba-path-16384spp.exr");
+    const Image reference = loadImage(fs::path(LANCER_CORNELL_DIR) / "mitsuba-path-16384spp.exr");
     const Image image =
         renderCornell({{"patch_size", 0.7}, {"threshold", 0.01}, {"subdivision_levels", 1}}, 16);
     ASSERT_EQ(image.width, reference.width);
