@@ -168,6 +168,21 @@ constexpr const char* nameOf(Stop stop) {
 void PrintTo(Stop stop, std::ostream* out) {
     *out << nameOf(stop);
 }
+
+// Stops lancer the way a user would.
+void stop(Stop how, const X11Window& window, const LancerProcess& lancer) {
+    switch (how) {
+        case Stop::ClosingTheWindow:
+            window.close();
+            break;
+        case Stop::Escape:
+            window.pressKey(XK_Escape);
+            break;
+        case Stop::CtrlC:
+            lancer.sendSignal(SIGINT);
+            break;
+    }
+}
 class StoppedMidRender : public LiveWindow, public testing::WithParamInterface<Stop> {};
 
 TEST_P(StoppedMidRender, SavesTheFinishedTilesAndExits130AsCtrlCDoes) {
@@ -183,17 +198,7 @@ TEST_P(StoppedMidRender, SavesTheFinishedTilesAndExits130AsCtrlCDoes) {
     ASSERT_LT(percentDone(window.title()), 100) << "title: " << window.title();
     EXPECT_NE(window.title().find("ETA"), std::string::npos) << "title: " << window.title();
 
-    switch (GetParam()) {
-        case Stop::ClosingTheWindow:
-            window.close();
-            break;
-        case Stop::Escape:
-            window.pressKey(XK_Escape);
-            break;
-        case Stop::CtrlC:
-            lancer.sendSignal(SIGINT);
-            break;
-    }
+    stop(GetParam(), window, lancer);
     const RunResult run = lancer.wait(kWait);
 
     EXPECT_EQ(run.exitStatus, 130) << run;
@@ -279,17 +284,7 @@ TEST_P(StoppedMidSolve, WritesNothingAndExits130) {
     ASSERT_TRUE(window.waitForTitle("radiosity: shooting", kWait)) << "title: " << window.title();
 
     const auto stopped = std::chrono::steady_clock::now();
-    switch (GetParam()) {
-        case Stop::ClosingTheWindow:
-            window.close();
-            break;
-        case Stop::Escape:
-            window.pressKey(XK_Escape);
-            break;
-        case Stop::CtrlC:
-            lancer.sendSignal(SIGINT);
-            break;
-    }
+    stop(GetParam(), window, lancer);
     const RunResult run = lancer.wait(kWait);
     // The solver stops between shots (each a few milliseconds, more under sanitizers).
     EXPECT_LT(std::chrono::steady_clock::now() - stopped, 5s);
