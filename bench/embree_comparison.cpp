@@ -29,7 +29,7 @@
 #include <thread>
 #include <vector>
 
-#include "geometry/Mesh.h"
+#include "accel/Mesh.h"
 #include "io/ObjLoader.h"
 
 namespace lancer {

@@ -6,7 +6,7 @@
 #include <thread>
 
 #include "Viewer.h"
-#include "radiosity/RadiosityIntegrator.h"
+#include "integrators/RadiosityIntegrator.h"
 #include "radiosity/RadiositySolver.h"
 #include "render/Renderer.h"
 #include "scene/Scene.h"

@@ -110,12 +110,12 @@ Viewer::~Viewer() {
     SDL_Quit();
 }
 
-void Viewer::showTile(const Film& film, const PixelWindow& tile) {
+void Viewer::showTile(const Image& film, const PixelWindow& tile) {
     std::lock_guard lock(mutex_);
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
-            const Color& c = film.pixel(x, y);
-            image_.setPixel(x, y, c);
+            const Color& c = film.at(x, y);
+            image_.at(x, y) = c;
             unsigned char* p = &pixels8_[3 * (static_cast<std::size_t>(y) *
                                                   static_cast<std::size_t>(image_.width()) +
                                               static_cast<std::size_t>(x))];
@@ -126,7 +126,7 @@ void Viewer::showTile(const Film& film, const PixelWindow& tile) {
     changed_ = unite(changed_, tile);
 }
 
-void Viewer::showFilm(const Film& film) {
+void Viewer::showFilm(const Image& film) {
     showTile(film, {0, 0, film.width(), film.height()});
 }
 
@@ -136,7 +136,7 @@ void Viewer::setStatus(const std::string& status) {
     statusChanged_ = true;
 }
 
-Film Viewer::image() const {
+Image Viewer::image() const {
     std::lock_guard lock(mutex_);
     return image_;
 }

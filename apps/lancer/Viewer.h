@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "render/Film.h"
+#include "image/Image.h"
 #include "render/Renderer.h"
 
 struct SDL_Renderer;
@@ -45,12 +45,12 @@ public:
     // --- any thread ---
 
     // Shows `film`'s pixels in `tile` (a copy: film may change afterwards).
-    void showTile(const Film& film, const PixelWindow& tile);
-    void showFilm(const Film& film);
+    void showTile(const Image& film, const PixelWindow& tile);
+    void showFilm(const Image& film);
     // The title becomes "NAME  STATUS".
     void setStatus(const std::string& status);
     // What the window shows, in linear radiance.
-    Film image() const;
+    Image image() const;
 
     // --- the thread that opened the window ---
 
@@ -68,7 +68,7 @@ private:
     bool exposed_ = true;  // the window needs drawing (the UI thread's own)
 
     mutable std::mutex mutex_;  // guards the members below
-    Film image_;
+    Image image_;
     std::vector<unsigned char> pixels8_;  // image_ as the window shows it: 8-bit sRGB, RGB order
     PixelWindow changed_;                 // what changed since the last upload; empty if nothing
     std::string status_;

@@ -2,8 +2,8 @@
 
 #include <unistd.h>
 
-#include <CLI/CLI.hpp>
 #include <tbb/global_control.h>
+#include <CLI/CLI.hpp>
 #include <algorithm>
 #include <atomic>
 #include <csignal>
@@ -18,13 +18,12 @@
 #include "LiveSolve.h"
 #include "ProgressBar.h"
 #include "Viewer.h"
+#include "integrators/IntegratorRegistry.h"
 #include "io/ImageWriter.h"
-#include "io/InputError.h"
-#include "radiosity/RadiosityIntegrator.h"
+#include "io/SceneLoader.h"
 #include "radiosity/RadiositySolver.h"
-#include "render/Integrator.h"
 #include "render/Renderer.h"
-#include "scene/SceneLoader.h"
+#include "scene/InputError.h"
 
 namespace fs = std::filesystem;
 using namespace lancer;
@@ -124,17 +123,16 @@ std::string describeRate(std::uint64_t rays, double seconds) {
     return text;
 }
 
-// The radiosity integrator with its solution, solved or loaded (and saved if asked), reported in
-// one line; the solve's progress shows in the viewer, if any. Null when the solve was stopped
-// (Ctrl-C, or the window closed).
-std::unique_ptr<Integrator> prepareRadiosity(const Scene& scene, const Options& options,
-                                             Viewer* viewer) {
+// The radiosity solution, solved or loaded (and saved if asked), reported in one line; the solve's
+// progress shows in the viewer, if any. None when the solve was stopped (Ctrl-C, or the window
+// closed).
+std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiositySolver& solver,
+                                                  const Options& options, Viewer* viewer) {
     // The solve runs on oneTBB's workers: no more of them than --threads allows.
     std::optional<tbb::global_control> threadLimit;
     if (options.threads > 0)
         threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
                             static_cast<std::size_t>(options.threads));
-    RadiositySolver solver(scene);
     RadiositySolution solution;
     if (options.loadRadiosity) {
         solution = RadiositySolution::load(*options.loadRadiosity);
@@ -146,25 +144,23 @@ std::unique_ptr<Integrator> prepareRadiosity(const Scene& scene, const Options& 
         std::optional<RadiositySolution> solved =
             viewer ? LiveSolve(*viewer, scene, solver, options.threads).run(interruptRequested)
                    : solver.solve({}, &interruptRequested);
-        if (!solved) return nullptr;
+        if (!solved) return std::nullopt;
         solution = std::move(*solved);
     }
     if (options.saveRadiosity) solution.save(*options.saveRadiosity);
     if (!options.quiet) {
         const RadiosityStatistics& s = solution.statistics();
-        std::fprintf(stderr,
-                     "lancer: radiosity%s: %llu patches, %llu elements, %llu shots, residual "
-                     "unshot power %.4g W (%.3g%% of %.4g W), solved in %.2f s\n",
-                     options.loadRadiosity ? (" loaded from " + *options.loadRadiosity).c_str() : "",
-                     static_cast<unsigned long long>(s.patches),
-                     static_cast<unsigned long long>(s.elements),
-                     static_cast<unsigned long long>(s.shots), s.residualPower,
-                     s.initialPower > 0 ? 100 * s.residualPower / s.initialPower : 0.0,
-                     s.initialPower, s.seconds);
+        std::fprintf(
+            stderr,
+            "lancer: radiosity%s: %llu patches, %llu elements, %llu shots, residual "
+            "unshot power %.4g W (%.3g%% of %.4g W), solved in %.2f s\n",
+            options.loadRadiosity ? (" loaded from " + *options.loadRadiosity).c_str() : "",
+            static_cast<unsigned long long>(s.patches), static_cast<unsigned long long>(s.elements),
+            static_cast<unsigned long long>(s.shots), s.residualPower,
+            s.initialPower > 0 ? 100 * s.residualPower / s.initialPower : 0.0, s.initialPower,
+            s.seconds);
     }
-    return std::make_unique<RadiosityIntegrator>(
-        scene, scene.settings().maxDepth,
-        std::make_shared<const RadiositySolution>(std::move(solution)));
+    return solution;
 }
 
 int run(const Options& options) {
@@ -220,9 +216,11 @@ int run(const Options& options) {
     std::signal(SIGINT, onInterrupt);
     std::unique_ptr<Integrator> integrator;
     try {
-        integrator = settings.integrator == "radiosity"
-                         ? prepareRadiosity(scene, options, viewer.get())
-                         : Integrator::create(scene);
+        IntegratorSetup setup;
+        setup.radiositySolution = [&](RadiositySolver& solver) {
+            return prepareRadiosity(scene, solver, options, viewer.get());
+        };
+        integrator = IntegratorRegistry::create(scene, setup);
     } catch (const std::invalid_argument& e) {
         return usageError(e.what());
     }
@@ -253,9 +251,9 @@ int run(const Options& options) {
     renderOptions.cancel = &interruptRequested;
     if (viewer) {
         // The window stays open after the render, until closed; Ctrl-C closes it too.
-        const int status = LiveRender(*viewer, scene, *integrator, renderOptions, output,
-                                      options.quiet)
-                               .run(deliver);
+        const int status =
+            LiveRender(*viewer, scene, *integrator, renderOptions, output, options.quiet)
+                .run(deliver);
         std::signal(SIGINT, SIG_DFL);
         return status;
     }
@@ -290,8 +288,8 @@ int main(int argc, char** argv) {
     app.add_option("--max-depth", options.maxDepth, "Recursion depth (overrides the scene)")
         ->check(CLI::Range(0, 1 << 10));
     app.add_option("--integrator", options.integrator,
-                   "whitted, path or radiosity (overrides the scene)")
-        ->check(CLI::IsMember({"whitted", "path", "radiosity"}));
+                   IntegratorRegistry::table().quotedNames() + " (overrides the scene)")
+        ->check(CLI::IsMember(IntegratorRegistry::table().names()));
     app.add_option("--threads", options.threads, "Worker threads; 0 = all cores")
         ->check(CLI::Range(0, 1024));
     app.add_option("--seed", options.seed,

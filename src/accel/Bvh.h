@@ -7,10 +7,10 @@
 #include <span>
 #include <vector>
 
-#include "geometry/Ray.h"
 #include "math/Bounds3.h"
 #include "math/Float.h"
 #include "math/Float4.h"
+#include "math/Ray.h"
 #include "math/Vec3.h"
 
 namespace lancer {

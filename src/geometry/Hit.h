@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "geometry/Ray.h"
+#include "math/Ray.h"
 #include "math/Vec2.h"
 #include "math/Vec3.h"
 

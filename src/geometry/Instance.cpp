@@ -1,7 +1,5 @@
 #include "geometry/Instance.h"
 
-#include "materials/Material.h"
-
 namespace lancer {
 
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& objectToWorld,
@@ -11,8 +9,8 @@ Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& objectTo
       objectToWorld_(objectToWorld),
       worldToObject_(objectToWorld.inverse()) {}
 
-bool Instance::hasTransmissiveMaterial() const {
-    return material() ? material()->isTransmissive() : shape_->hasTransmissiveMaterial();
+const Material* Instance::primitiveMaterial(std::uint32_t primitive) const {
+    return material() ? material() : shape_->primitiveMaterial(primitive);
 }
 
 Bounds3 Instance::bounds() const {

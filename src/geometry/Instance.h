@@ -20,7 +20,9 @@ public:
     Bounds3 bounds() const override;
     bool isBounded() const override { return shape_->isBounded(); }
     bool emitsOnBothSides() const override { return shape_->emitsOnBothSides(); }
-    bool hasTransmissiveMaterial() const override;
+    std::uint32_t primitiveCount() const override { return shape_->primitiveCount(); }
+    // The instance's own material, when it has one, replaces the shape's.
+    const Material* primitiveMaterial(std::uint32_t primitive) const override;
 
     const Shape& placedShape() const { return *shape_; }
     const Transform& objectToWorld() const { return objectToWorld_; }

@@ -1,8 +1,10 @@
 #pragma once
 
+#include <cstdint>
+
 #include "geometry/Hit.h"
-#include "geometry/Ray.h"
 #include "math/Bounds3.h"
+#include "math/Ray.h"
 
 namespace lancer {
 
@@ -38,11 +40,12 @@ public:
     // only the side the geometric normal points to (triangles).
     virtual bool emitsOnBothSides() const { return true; }
 
-    // Whether light can pass through some of the shape's surface (shadow rays must then look
-    // past the first surface they meet).
-    virtual bool hasTransmissiveMaterial() const;
-
     const Material* material() const { return material_; }
+
+    // The surface is made of primitives (a mesh's triangles; the shape itself for the others),
+    // numbered as Hit::primitive numbers them, each of one material (null: none of its own).
+    virtual std::uint32_t primitiveCount() const { return 1; }
+    virtual const Material* primitiveMaterial(std::uint32_t) const { return material_; }
 
     // The light whose visible surface this shape is (an area light's quad or sphere, an emissive
     // surface sampled as a light), or null. Integrators use it to weigh a ray that hits the light

@@ -3,51 +3,15 @@
 #include <cstdint>
 #include <optional>
 
-#include "geometry/Ray.h"
+#include "geometry/PackHits.h"
+#include "geometry/TriangleIntersection.h"
+#include "geometry/TrianglePack.h"
 #include "math/Float.h"
 #include "math/Float4.h"
+#include "math/Ray.h"
 #include "math/Vec3.h"
 
 namespace lancer {
-
-// Where a ray meets a triangle: barycentric coordinates of vertices 0, 1, 2 and the ray's t.
-struct TriangleIntersection {
-    float b0, b1, b2;
-    float t;
-};
-
-// Four triangles side by side, for testing them together: vertex[i][axis][lane] is coordinate
-// `axis` of vertex i of the lane's triangle, so that one row holds a coordinate of all four and
-// the row of an axis known only at run time is one aligned load.
-struct alignas(16) TrianglePack {
-    static constexpr int kLanes = 4;
-
-    float vertex[3][3][kLanes];
-    std::uint32_t triangle[kLanes];  // which triangle each lane holds, in the owner's numbering
-
-    void set(int lane, const Vec3& v0, const Vec3& v1, const Vec3& v2) {
-        const Vec3* corners[3] = {&v0, &v1, &v2};
-        for (int i = 0; i < 3; ++i)
-            for (int axis = 0; axis < 3; ++axis)
-                vertex[i][axis][lane] = (*corners[i])[axis];
-    }
-};
-
-// The hits of a ray on the lanes of a TrianglePack.
-struct PackHits {
-    int lanes;  // bit i set when lane i is hit
-    float t[TrianglePack::kLanes];
-    float b0[TrianglePack::kLanes], b1[TrianglePack::kLanes], b2[TrianglePack::kLanes];
-
-    // The hit with the smallest t (the first lane of those at that t). Requires lanes != 0.
-    int nearestLane() const {
-        int nearest = -1;
-        for (int lane = 0; lane < TrianglePack::kLanes; ++lane)
-            if ((lanes >> lane & 1) && (nearest < 0 || t[lane] < t[nearest])) nearest = lane;
-        return nearest;
-    }
-    TriangleIntersection at(int lane) const { return {b0[lane], b1[lane], b2[lane], t[lane]}; }
-};
 
 // Watertight ray/triangle intersection (Woop, Benthin and Wald 2013, in pbrt's formulation): the
 // triangle is moved into a frame where the ray starts at the origin and runs along +z, so that
@@ -163,30 +127,7 @@ private:
     // The edge functions of the given lanes recomputed in double, where float rounded them to
     // exactly zero: that is what makes the test watertight on shared edges (Woop et al. 2013).
     static void recomputeInDouble(int lanes, const Float4 (&x)[3], const Float4 (&y)[3],
-                                  Float4 (&e)[3]) {
-        float xs[3][4], ys[3][4], es[3][4];
-        for (int i = 0; i < 3; ++i) {
-            x[i].store(xs[i]);
-            y[i].store(ys[i]);
-            e[i].store(es[i]);
-        }
-        for (int lane = 0; lane < 4; ++lane) {
-            if (!(lanes >> lane & 1)) continue;
-            for (int i = 0; i < 3; ++i) {
-                if (es[i][lane] != 0) continue;
-                // Edge i runs from vertex i + 1 to vertex i + 2.
-                const int a = (i + 1) % 3, b = (i + 2) % 3;
-                es[i][lane] = static_cast<float>(double(xs[a][lane]) * double(ys[b][lane]) -
-                                                 double(ys[a][lane]) * double(xs[b][lane]));
-            }
-        }
-        alignas(16) float row[4];
-        for (int i = 0; i < 3; ++i) {
-            for (int lane = 0; lane < 4; ++lane)
-                row[lane] = es[i][lane];
-            e[i] = Float4::load(row);
-        }
-    }
+                                  Float4 (&e)[3]);
 
     // maxComponent(abs(Vec3(v[0], v[1], v[2]))), lane by lane.
     static Float4 maxAbs(const Float4 (&v)[3]) { return max(abs(v[0]), max(abs(v[1]), abs(v[2]))); }

@@ -13,8 +13,8 @@
 #include <system_error>
 
 #include "io/FreeImageSupport.h"
-#include "io/InputError.h"
 #include "math/Srgb.h"
+#include "scene/InputError.h"
 
 namespace lancer {
 
@@ -247,6 +247,10 @@ Image ImageReader::read(const std::filesystem::path& path) {
         }
     }
     return image;
+}
+
+std::shared_ptr<const ImageTexture> ImageReader::readTexture(const std::filesystem::path& path) {
+    return std::make_shared<const ImageTexture>(std::make_shared<const MipMap>(read(path)));
 }
 
 }  // namespace lancer

@@ -1,8 +1,10 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 
-#include "materials/Image.h"
+#include "image/Image.h"
+#include "materials/ImageTexture.h"
 
 namespace lancer {
 
@@ -17,6 +19,8 @@ public:
     // Throws InputError naming the file when it is missing, unreadable, corrupt or holds pixels
     // that are not colour (complex or 32-bit integer data, for example).
     static Image read(const std::filesystem::path& path);
+    // The image of the file as a texture: read, then its mip-map pyramid built.
+    static std::shared_ptr<const ImageTexture> readTexture(const std::filesystem::path& path);
 };
 
 }  // namespace lancer

@@ -46,27 +46,27 @@ const Format* findFormat(const std::filesystem::path& path) {
     return nullptr;
 }
 
-FreeImageBitmap toLinearBitmap(const Film& film, FREE_IMAGE_FORMAT format) {
+FreeImageBitmap toLinearBitmap(const Image& film, FREE_IMAGE_FORMAT format) {
     FreeImageBitmap bitmap(FreeImage_AllocateT(FIT_RGBF, film.width(), film.height()));
     if (!bitmap) return bitmap;
     for (int y = 0; y < film.height(); ++y) {
         auto* row = reinterpret_cast<FIRGBF*>(
             FreeImage_GetScanLine(bitmap.get(), scanlineOfRow(format, y, film.height())));
         for (int x = 0; x < film.width(); ++x) {
-            const Color& c = film.pixel(x, y);
+            const Color& c = film.at(x, y);
             row[x] = {c.r, c.g, c.b};
         }
     }
     return bitmap;
 }
 
-FreeImageBitmap toSrgbBitmap(const Film& film, FREE_IMAGE_FORMAT format) {
+FreeImageBitmap toSrgbBitmap(const Image& film, FREE_IMAGE_FORMAT format) {
     FreeImageBitmap bitmap(FreeImage_Allocate(film.width(), film.height(), 24));
     if (!bitmap) return bitmap;
     for (int y = 0; y < film.height(); ++y) {
         BYTE* row = FreeImage_GetScanLine(bitmap.get(), scanlineOfRow(format, y, film.height()));
         for (int x = 0; x < film.width(); ++x, row += 3) {
-            const Color& c = film.pixel(x, y);
+            const Color& c = film.at(x, y);
             row[FI_RGBA_RED] = linearToSrgb8(c.r);
             row[FI_RGBA_GREEN] = linearToSrgb8(c.g);
             row[FI_RGBA_BLUE] = linearToSrgb8(c.b);
@@ -88,7 +88,7 @@ std::string ImageWriter::supportedExtensions() {
     return list;
 }
 
-void ImageWriter::write(const Film& film, const std::filesystem::path& path) {
+void ImageWriter::write(const Image& film, const std::filesystem::path& path) {
     const Format* format = findFormat(path);
     if (!format) throw std::runtime_error(path.string() + ": unsupported image format");
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "render/Film.h"
+#include "image/Image.h"
 
 namespace lancer {
 
@@ -19,7 +19,7 @@ public:
     static std::string supportedExtensions();
 
     // Throws std::runtime_error naming the file when it cannot be written.
-    static void write(const Film& film, const std::filesystem::path& path);
+    static void write(const Image& film, const std::filesystem::path& path);
 };
 
 }  // namespace lancer

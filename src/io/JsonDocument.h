@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io/InputError.h"
+#include "scene/InputError.h"
 
 namespace lancer {
 

@@ -60,10 +60,10 @@
 #include <utility>
 #include <vector>
 
-#include "io/InputError.h"
 #include "materials/ConstantTexture.h"
 #include "materials/Material.h"
 #include "math/Float.h"
+#include "scene/InputError.h"
 
 namespace lancer {
 

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <filesystem>
 #include <memory>
 
 #include "materials/MipMap.h"
@@ -14,10 +13,6 @@ class ImageTexture final : public Texture {
 public:
     // The pyramid is shared, so that one file used by several materials is stored once.
     explicit ImageTexture(std::shared_ptr<const MipMap> mipmap);
-
-    // Reads the image file and builds its pyramid; throws InputError naming the file when it
-    // cannot be read.
-    static std::shared_ptr<const ImageTexture> load(const std::filesystem::path& path);
 
     // The footprint is the longer side of the parallelogram that one pixel covers in uv,
     // max(|(dudx, dvdx)|, |(dudy, dvdy)|): the scale factor of the OpenGL specification, which

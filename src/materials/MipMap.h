@@ -2,7 +2,7 @@
 
 #include <vector>
 
-#include "materials/Image.h"
+#include "image/Image.h"
 #include "math/Color.h"
 #include "math/Vec2.h"
 

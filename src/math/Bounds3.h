@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include "geometry/Ray.h"
 #include "math/Float.h"
+#include "math/Ray.h"
 #include "math/Vec3.h"
 
 namespace lancer {

@@ -3,8 +3,8 @@
 #include <cmath>
 
 #include "lights/Light.h"
-#include "radiosity/StratifiedPoint.h"
 #include "radiosity/SurfaceProbe.h"
+#include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
 
 namespace lancer {

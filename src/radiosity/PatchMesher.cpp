@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "accel/Mesh.h"
 #include "geometry/Instance.h"
-#include "geometry/Mesh.h"
 #include "geometry/Plane.h"
 #include "geometry/Quad.h"
 #include "geometry/Sphere.h"

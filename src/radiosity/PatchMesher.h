@@ -4,7 +4,7 @@
 
 #include "math/Bounds3.h"
 #include "radiosity/RadiosityMesh.h"
-#include "radiosity/RadiositySettings.h"
+#include "scene/RadiositySettings.h"
 
 namespace lancer {
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "geometry/Triangle.h"
-#include "io/InputError.h"
+#include "scene/InputError.h"
 
 namespace lancer {
 

@@ -11,8 +11,8 @@
 
 #include "lights/Light.h"
 #include "radiosity/PatchMesher.h"
-#include "radiosity/StratifiedPoint.h"
 #include "radiosity/SurfaceProbe.h"
+#include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
 
 namespace lancer {

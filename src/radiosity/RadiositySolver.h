@@ -9,8 +9,8 @@
 #include "radiosity/FormFactor.h"
 #include "radiosity/RadiosityMesh.h"
 #include "radiosity/RadiosityProgress.h"
-#include "radiosity/RadiositySettings.h"
 #include "radiosity/RadiositySolution.h"
+#include "scene/RadiositySettings.h"
 
 namespace lancer {
 

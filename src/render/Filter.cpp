@@ -3,10 +3,10 @@
 #include <stdexcept>
 
 #include "render/BoxFilter.h"
-#include "render/FilterSettings.h"
 #include "render/GaussianFilter.h"
 #include "render/MitchellFilter.h"
 #include "render/TentFilter.h"
+#include "scene/FilterSettings.h"
 
 namespace lancer {
 

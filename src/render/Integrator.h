@@ -1,10 +1,9 @@
 #pragma once
 
 #include <cstdint>
-#include <memory>
 
-#include "geometry/Ray.h"
 #include "math/Color.h"
+#include "math/Ray.h"
 
 namespace lancer {
 
@@ -22,9 +21,6 @@ public:
     // ray traced (the camera ray included).
     virtual Color radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
                            std::uint64_t& rayCount) const = 0;
-
-    // The integrator the scene's settings name ("whitted", ...), rendering that scene.
-    static std::unique_ptr<Integrator> create(const Scene& scene);
 };
 
 }  // namespace lancer

@@ -5,7 +5,7 @@
 #include <limits>
 
 #include "render/Integrator.h"
-#include "render/Sampler.h"
+#include "sampling/Sampler.h"
 #include "scene/Scene.h"
 
 namespace lancer {

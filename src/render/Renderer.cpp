@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "render/Integrator.h"
-#include "render/Sampler.h"
+#include "sampling/Sampler.h"
 #include "scene/Scene.h"
 
 namespace lancer {
@@ -78,7 +78,7 @@ RenderResult Renderer::render(const RenderOptions& options) const {
     const std::vector<PixelWindow> tiles =
         options.previewOnly ? std::vector<PixelWindow>{} : cutIntoTiles(window, kTileSize);
 
-    RenderResult result{Film(settings.width, settings.height)};
+    RenderResult result{Image(settings.width, settings.height)};
     result.threads = options.threads > 0
                          ? options.threads
                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -89,7 +89,7 @@ RenderResult Renderer::render(const RenderOptions& options) const {
     const auto cancelled = [&] {
         return options.cancel && options.cancel->load(std::memory_order_relaxed);
     };
-    const auto report = [&](const Film& film, const PixelWindow& tile, bool preview) {
+    const auto report = [&](const Image& film, const PixelWindow& tile, bool preview) {
         std::lock_guard lock(reportMutex);
         if (!preview) ++tilesDone;
         if (options.onTileDone) options.onTileDone({film, tile, preview, tilesDone, tilesTotal});
@@ -99,7 +99,7 @@ RenderResult Renderer::render(const RenderOptions& options) const {
     // finer one. Their pixels go to a film of their own: an interrupted render's image holds
     // finished tiles only.
     if (!options.previewBlockSizes.empty()) {
-        Film preview(settings.width, settings.height);
+        Image preview(settings.width, settings.height);
         for (const int blockSize : options.previewBlockSizes) {
             result.counters += renderTilesInParallel(
                 cutIntoTiles(window, kTileSize * blockSize), result.threads,
@@ -109,7 +109,7 @@ RenderResult Renderer::render(const RenderOptions& options) const {
                         const Color c = previewSample(block, options.seed, counters.rays);
                         for (int y = block.y0; y < block.y1; ++y)
                             for (int x = block.x0; x < block.x1; ++x)
-                                preview.setPixel(x, y, c);
+                                preview.at(x, y) = c;
                     }
                     report(preview, tile, true);
                     return true;
@@ -131,9 +131,8 @@ RenderResult Renderer::render(const RenderOptions& options) const {
             }
             for (int y = tile.y0; y < tile.y1; ++y)
                 for (int x = tile.x0; x < tile.x1; ++x)
-                    result.film.setPixel(x, y,
-                                         tilePixels[static_cast<std::size_t>(
-                                             (y - tile.y0) * tile.width() + (x - tile.x0))]);
+                    result.film.at(x, y) = tilePixels[static_cast<std::size_t>(
+                        (y - tile.y0) * tile.width() + (x - tile.x0))];
             report(result.film, tile, false);
             return true;
         });

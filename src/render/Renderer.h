@@ -6,7 +6,7 @@
 #include <optional>
 #include <vector>
 
-#include "render/Film.h"
+#include "image/Image.h"
 #include "render/PixelEstimator.h"
 #include "render/RenderCounters.h"
 
@@ -25,7 +25,7 @@ struct PixelWindow {
 
 // A tile just finished, as reported to RenderOptions::onTileDone.
 struct FinishedTile {
-    const Film& film;  // holds the tile's pixels; read them during the call only
+    const Image& film;  // holds the tile's pixels; read them during the call only
     PixelWindow tile;
     bool preview;       // a coarse pass's stand-in pixels (in a film of their own), not the image's
     int tilesDone = 0;  // the image's tiles finished so far (previews not counted)
@@ -50,7 +50,7 @@ struct RenderOptions {
 };
 
 struct RenderResult {
-    Film film;
+    Image film;
     bool interrupted = false;   // cancelled: only the tiles finished before are in the film
     RenderCounters counters{};  // rays traced, samples taken, NaN or infinite samples dropped
     double seconds = 0;

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "render/Sampling.h"
+#include "sampling/Sampling.h"
 
 namespace lancer {
 

@@ -1,6 +1,6 @@
 #pragma once
 
-#include "geometry/Ray.h"
+#include "math/Ray.h"
 #include "math/Vec2.h"
 
 namespace lancer {

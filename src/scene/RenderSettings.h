@@ -3,9 +3,9 @@
 #include <optional>
 #include <string>
 
-#include "radiosity/RadiositySettings.h"
-#include "render/AdaptiveSettings.h"
-#include "render/FilterSettings.h"
+#include "scene/AdaptiveSettings.h"
+#include "scene/FilterSettings.h"
+#include "scene/RadiositySettings.h"
 
 namespace lancer {
 

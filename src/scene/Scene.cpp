@@ -8,7 +8,10 @@ const Material* Scene::addMaterial(std::unique_ptr<Material> material) {
 }
 
 void Scene::addShape(std::unique_ptr<Shape> shape) {
-    hasTransmissiveMaterial_ |= shape->hasTransmissiveMaterial();
+    for (std::uint32_t i = 0; i < shape->primitiveCount() && !hasTransmissiveMaterial_; ++i) {
+        const Material* material = shape->primitiveMaterial(i);
+        hasTransmissiveMaterial_ = material && material->isTransmissive();
+    }
     (shape->isBounded() ? boundedShapes_ : unboundedShapes_).push_back(std::move(shape));
 }
 

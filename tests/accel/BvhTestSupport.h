@@ -14,9 +14,9 @@
 #include <vector>
 
 #include "accel/Bvh.h"
-#include "geometry/Ray.h"
 #include "geometry/Triangle.h"
 #include "math/Bounds3.h"
+#include "math/Ray.h"
 #include "math/Vec3.h"
 
 namespace lancer::test {

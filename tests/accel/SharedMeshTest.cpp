@@ -26,9 +26,9 @@
 #include <vector>
 
 #include "BvhTestSupport.h"
+#include "accel/Mesh.h"
 #include "geometry/Hit.h"
 #include "geometry/Instance.h"
-#include "geometry/Mesh.h"
 #include "geometry/Triangle.h"
 #include "geometry/TriangleMesh.h"
 #include "io/ObjLoader.h"

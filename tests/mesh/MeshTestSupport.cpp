@@ -4,8 +4,8 @@
 #include <random>
 
 #include "geometry/Hit.h"
-#include "io/InputError.h"
 #include "materials/ConstantTexture.h"
+#include "scene/InputError.h"
 
 namespace lancer::test {
 

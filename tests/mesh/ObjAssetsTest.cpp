@@ -5,7 +5,7 @@
 #include <set>
 
 #include "MeshTestSupport.h"
-#include "io/InputError.h"
+#include "scene/InputError.h"
 
 namespace lancer::test {
 namespace {

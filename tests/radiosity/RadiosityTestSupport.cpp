@@ -2,9 +2,9 @@
 
 #include <sstream>
 
+#include "io/SceneLoader.h"
 #include "radiosity/FormFactor.h"
-#include "render/Sampling.h"
-#include "scene/SceneLoader.h"
+#include "sampling/Sampling.h"
 
 namespace lancer::test {
 

@@ -11,8 +11,8 @@
 
 #include "TextureTestSupport.h"
 #include "io/ImageReader.h"
-#include "io/InputError.h"
 #include "math/Srgb.h"
+#include "scene/InputError.h"
 
 namespace lancer {
 namespace {

@@ -5,9 +5,10 @@
 #include <memory>
 
 #include "TextureTestSupport.h"
-#include "io/InputError.h"
+#include "io/ImageReader.h"
 #include "materials/ImageTexture.h"
 #include "math/Srgb.h"
+#include "scene/InputError.h"
 
 namespace lancer {
 namespace {
@@ -67,7 +68,7 @@ TEST(ImageTextureLoadTest, LoadsAFileIntoAMipMap) {
     const test::fs::path file = folder / "texture.png";
     test::save(test::makeBitmap8(4, 2, [](int x, int) { return test::rgb(x * 60, 0, 255); }), file,
                FIF_PNG);
-    const std::shared_ptr<const ImageTexture> texture = ImageTexture::load(file);
+    const std::shared_ptr<const ImageTexture> texture = ImageReader::readTexture(file);
     ASSERT_EQ(texture->mipmap().levelCount(), 3);
     Hit hit;
     hit.uv = {(2 + 0.5f) / 4, 0.25f};  // texel (2, 1)
@@ -76,7 +77,7 @@ TEST(ImageTextureLoadTest, LoadsAFileIntoAMipMap) {
 
 TEST(ImageTextureLoadTest, LoadsARealTextureOfOddWidth) {
     const std::shared_ptr<const ImageTexture> texture =
-        ImageTexture::load(test::dataFolder() / "SpiderTex.jpg");
+        ImageReader::readTexture(test::dataFolder() / "SpiderTex.jpg");
     const MipMap& mipmap = texture->mipmap();
     EXPECT_EQ(mipmap.image(0).width(), 249);
     EXPECT_EQ(mipmap.image(0).height(), 250);
@@ -89,7 +90,7 @@ TEST(ImageTextureLoadTest, MissingFileIsAnInputErrorNamingIt) {
     const test::TempFolder folder;
     const test::fs::path file = folder / "missing.jpg";
     try {
-        ImageTexture::load(file);
+        ImageReader::readTexture(file);
         FAIL() << "no error";
     } catch (const InputError& error) {
         EXPECT_NE(std::string(error.what()).find(file.string()), std::string::npos) << error.what();

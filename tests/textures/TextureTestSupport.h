@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-#include "materials/Image.h"
+#include "image/Image.h"
 
 #include "TempFolder.h"
 

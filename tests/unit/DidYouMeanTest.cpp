@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "scene/DidYouMean.h"
+#include "util/DidYouMean.h"
 
 namespace lancer {
 namespace {

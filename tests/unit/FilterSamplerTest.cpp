@@ -10,7 +10,7 @@
 
 #include "render/Filter.h"
 #include "render/FilterSampler.h"
-#include "render/FilterSettings.h"
+#include "scene/FilterSettings.h"
 
 namespace lancer {
 namespace {

@@ -8,8 +8,8 @@
 #include <string>
 
 #include "render/Filter.h"
-#include "render/FilterSettings.h"
 #include "render/GaussianFilter.h"
+#include "scene/FilterSettings.h"
 
 namespace lancer {
 namespace {

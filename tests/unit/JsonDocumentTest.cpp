@@ -4,8 +4,8 @@
 
 #include <string>
 
-#include "io/InputError.h"
 #include "io/JsonDocument.h"
+#include "scene/InputError.h"
 
 namespace lancer {
 namespace {

@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "TestSupport.h"
+#include "io/SceneLoader.h"
 #include "lights/QuadLight.h"
 #include "lights/SphereLight.h"
 #include "lights/SpotLight.h"
-#include "scene/SceneLoader.h"
 
 namespace lancer {
 namespace {

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "render/Integrator.h"
+#include "integrators/IntegratorRegistry.h"
+#include "io/SceneLoader.h"
 #include "render/PixelEstimator.h"
-#include "scene/SceneLoader.h"
 
 namespace lancer {
 namespace {
@@ -33,7 +33,7 @@ std::string sphereScene(const std::string& renderExtras) {
 struct RenderablePixels {
     explicit RenderablePixels(const std::string& text)
         : scene(load(text)),
-          integrator(Integrator::create(scene)),
+          integrator(IntegratorRegistry::create(scene)),
           estimator(std::make_unique<PixelEstimator>(scene, *integrator)) {}
 
     static Scene load(const std::string& text) {

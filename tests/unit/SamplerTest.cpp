@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "math/Vec2.h"
-#include "render/Sampler.h"
+#include "sampling/Sampler.h"
 
 namespace lancer {
 namespace {

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "TestSupport.h"
-#include "io/InputError.h"
-#include "scene/SceneLoader.h"
+#include "io/SceneLoader.h"
+#include "scene/InputError.h"
 
 namespace lancer {
 namespace {

@@ -6,8 +6,8 @@
 #include <fstream>
 #include <string>
 
-#include "io/InputError.h"
-#include "scene/SceneLoader.h"
+#include "io/SceneLoader.h"
+#include "scene/InputError.h"
 
 namespace lancer {
 namespace {

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "LancerRun.h"
-#include "render/Integrator.h"
+#include "integrators/IntegratorRegistry.h"
+#include "io/SceneLoader.h"
 #include "render/Renderer.h"
-#include "scene/SceneLoader.h"
 
 namespace lancer::test {
 namespace {
@@ -25,10 +25,10 @@ Scene smallWhittedScene() {
     return SceneLoader::loadString(scene.dump(), "whitted.json", warnings);
 }
 
-bool sameImage(const Film& a, const Film& b) {
+bool sameImage(const lancer::Image& a, const lancer::Image& b) {
     for (int y = 0; y < a.height(); ++y)
         for (int x = 0; x < a.width(); ++x)
-            if (!(a.pixel(x, y) == b.pixel(x, y))) return false;
+            if (!(a.at(x, y) == b.at(x, y))) return false;
     return true;
 }
 
@@ -40,7 +40,7 @@ struct Report {
 
 TEST(PreviewPass, CoarsePassesComeFirstCoverTheImageAndLeaveItUnchanged) {
     const Scene scene = smallWhittedScene();
-    const auto integrator = Integrator::create(scene);
+    const auto integrator = IntegratorRegistry::create(scene);
     const Renderer renderer(scene, *integrator);
 
     RenderOptions plain;
@@ -50,14 +50,14 @@ TEST(PreviewPass, CoarsePassesComeFirstCoverTheImageAndLeaveItUnchanged) {
     RenderOptions live = plain;
     live.previewBlockSizes = {8, 2};
     std::vector<Report> reports;
-    Film shown(kWidth, kHeight);  // what a viewer would show, copied during the calls
+    lancer::Image shown(kWidth, kHeight);  // what a viewer would show, copied during the calls
     std::vector<int> coverage(kWidth * kHeight, 0);
     int previewTiles = 0;
     live.onTileDone = [&](const FinishedTile& done) {
         reports.push_back({done.tile, done.preview, done.tilesDone});
         for (int y = done.tile.y0; y < done.tile.y1; ++y)
             for (int x = done.tile.x0; x < done.tile.x1; ++x) {
-                shown.setPixel(x, y, done.film.pixel(x, y));
+                shown.at(x, y) = done.film.at(x, y);
                 ++coverage[static_cast<std::size_t>(y * kWidth + x)];
             }
         if (done.preview) {
@@ -66,8 +66,8 @@ TEST(PreviewPass, CoarsePassesComeFirstCoverTheImageAndLeaveItUnchanged) {
             const int block = previewTiles++ == 0 ? 8 : 2;
             for (int y = t.y0; y < t.y1; ++y)
                 for (int x = t.x0; x < t.x1; ++x)
-                    EXPECT_EQ(done.film.pixel(x, y),
-                              done.film.pixel(x - (x - t.x0) % block, y - (y - t.y0) % block));
+                    EXPECT_EQ(done.film.at(x, y),
+                              done.film.at(x - (x - t.x0) % block, y - (y - t.y0) % block));
         }
     };
     const RenderResult result = renderer.render(live);
@@ -94,7 +94,7 @@ TEST(PreviewPass, CoarsePassesComeFirstCoverTheImageAndLeaveItUnchanged) {
 
 TEST(PreviewPass, ACancelledRenderHoldsNoPreviewPixels) {
     const Scene scene = smallWhittedScene();
-    const auto integrator = Integrator::create(scene);
+    const auto integrator = IntegratorRegistry::create(scene);
     std::atomic<bool> cancel{false};
     RenderOptions options;
     options.threads = 2;
@@ -111,7 +111,7 @@ TEST(PreviewPass, ACancelledRenderHoldsNoPreviewPixels) {
     EXPECT_GE(previews, 1);
     for (int y = 0; y < kHeight; ++y)
         for (int x = 0; x < kWidth; ++x)
-            ASSERT_EQ(result.film.pixel(x, y), Color(0)) << "pixel " << x << "," << y;
+            ASSERT_EQ(result.film.at(x, y), Color(0)) << "pixel " << x << "," << y;
 }
 
 }  // namespace

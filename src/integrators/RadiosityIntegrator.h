@@ -2,8 +2,8 @@
 
 #include <memory>
 
+#include "integrators/WhittedIntegrator.h"
 #include "radiosity/RadiositySolution.h"
-#include "render/WhittedIntegrator.h"
 
 namespace lancer {
 
@@ -18,6 +18,8 @@ class RadiosityIntegrator final : public WhittedIntegrator {
 public:
     RadiosityIntegrator(const Scene& scene, int maxDepth,
                         std::shared_ptr<const RadiositySolution> solution);
+    // With the solution the setup gives (by default, solved for the scene); null when stopped.
+    static std::unique_ptr<Integrator> create(const Scene& scene, const IntegratorSetup& setup);
 
     const RadiositySolution& solution() const { return *solution_; }
 

@@ -1,10 +1,13 @@
 #pragma once
 
+#include <memory>
+
 #include "render/Integrator.h"
 
 namespace lancer {
 
 class Scene;
+struct IntegratorSetup;
 struct Hit;
 
 // Whitted ray tracing with the scene format's shading equation: emission, ambient, Blinn-Phong
@@ -14,6 +17,7 @@ struct Hit;
 class WhittedIntegrator : public Integrator {
 public:
     WhittedIntegrator(const Scene& scene, int maxDepth);
+    static std::unique_ptr<Integrator> create(const Scene& scene, const IntegratorSetup& setup);
 
     Color radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
                    std::uint64_t& rayCount) const override;

@@ -1,14 +1,15 @@
-#include "radiosity/RadiosityIntegrator.h"
+#include "integrators/RadiosityIntegrator.h"
 
 #include <bit>
 #include <cmath>
 
+#include "integrators/IntegratorRegistry.h"
 #include "lights/Light.h"
 #include "materials/BlinnPhongLobe.h"
 #include "materials/Material.h"
 #include "radiosity/RadiositySolver.h"
-#include "render/Sampler.h"
-#include "render/Sampling.h"
+#include "sampling/Sampler.h"
+#include "sampling/Sampling.h"
 #include "scene/Scene.h"
 
 namespace lancer {
@@ -16,6 +17,17 @@ namespace lancer {
 RadiosityIntegrator::RadiosityIntegrator(const Scene& scene, int maxDepth,
                                          std::shared_ptr<const RadiositySolution> solution)
     : WhittedIntegrator(scene, maxDepth), solution_(std::move(solution)) {}
+
+std::unique_ptr<Integrator> RadiosityIntegrator::create(const Scene& scene,
+                                                        const IntegratorSetup& setup) {
+    RadiositySolver solver(scene);
+    std::optional<RadiositySolution> solution =
+        setup.radiositySolution ? setup.radiositySolution(solver) : solver.solve();
+    if (!solution) return nullptr;
+    return std::make_unique<RadiosityIntegrator>(
+        scene, scene.settings().maxDepth,
+        std::make_shared<const RadiositySolution>(std::move(*solution)));
+}
 
 Color RadiosityIntegrator::localShading(const Hit& hit, const Vec3& n, const Vec3& wo,
                                         Sampler& sampler, std::uint64_t& rayCount) const {

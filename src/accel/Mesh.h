@@ -20,7 +20,10 @@ public:
     bool occluded(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override { return bvh_.bounds(); }
     bool emitsOnBothSides() const override { return false; }
-    bool hasTransmissiveMaterial() const override;
+    std::uint32_t primitiveCount() const override {
+        return static_cast<std::uint32_t>(triangles_.triangleCount());
+    }
+    const Material* primitiveMaterial(std::uint32_t triangle) const override;
 
     const TriangleMesh& triangles() const { return triangles_; }
     // Bytes held by the mesh's arrays and its BVH.

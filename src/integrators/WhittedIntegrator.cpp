@@ -1,4 +1,4 @@
-#include "render/WhittedIntegrator.h"
+#include "integrators/WhittedIntegrator.h"
 
 #include <algorithm>
 #include <bit>
@@ -6,14 +6,18 @@
 
 #include "materials/Material.h"
 #include "materials/Optics.h"
-#include "render/Sampler.h"
-#include "render/Sampling.h"
+#include "sampling/Sampler.h"
+#include "sampling/Sampling.h"
 #include "scene/Scene.h"
 
 namespace lancer {
 
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth)
     : scene_(scene), maxDepth_(maxDepth) {}
+
+std::unique_ptr<Integrator> WhittedIntegrator::create(const Scene& scene, const IntegratorSetup&) {
+    return std::make_unique<WhittedIntegrator>(scene, scene.settings().maxDepth);
+}
 
 Color WhittedIntegrator::radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
                                   std::uint64_t& rayCount) const {

@@ -1,6 +1,6 @@
-#include "render/Sampler.h"
+#include "sampling/Sampler.h"
 
-#include "render/Sampling.h"
+#include "sampling/Sampling.h"
 
 namespace lancer {
 

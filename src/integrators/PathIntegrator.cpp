@@ -1,11 +1,11 @@
-#include "render/PathIntegrator.h"
+#include "integrators/PathIntegrator.h"
 
 #include <algorithm>
 #include <cmath>
 
 #include "materials/Bsdf.h"
 #include "materials/Material.h"
-#include "render/Sampler.h"
+#include "sampling/Sampler.h"
 #include "scene/Scene.h"
 
 namespace lancer {
@@ -24,6 +24,10 @@ float powerHeuristic(float a, float b) {
 
 PathIntegrator::PathIntegrator(const Scene& scene, int maxDepth)
     : scene_(scene), maxDepth_(maxDepth), lights_(scene) {}
+
+std::unique_ptr<Integrator> PathIntegrator::create(const Scene& scene, const IntegratorSetup&) {
+    return std::make_unique<PathIntegrator>(scene, scene.settings().maxDepth);
+}
 
 Color PathIntegrator::sampleOneLight(const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
                                      float uChoice, const Vec2& uLight,

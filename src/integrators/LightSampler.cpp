@@ -1,12 +1,12 @@
-#include "render/LightSampler.h"
+#include "integrators/LightSampler.h"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include "accel/Mesh.h"
 #include "geometry/Hit.h"
 #include "geometry/Instance.h"
-#include "geometry/Mesh.h"
 #include "geometry/Sphere.h"
 #include "geometry/Triangle.h"
 #include "lights/SphereLight.h"

@@ -1,10 +1,9 @@
-#include "geometry/Mesh.h"
+#include "accel/Mesh.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include "geometry/Triangle.h"
-#include "materials/Material.h"
 
 namespace lancer {
 
@@ -135,10 +134,10 @@ bool Mesh::occluded(const Ray& ray, float tMax) const {
     return bvh_.occluded(ray, tMax, occludedLeaf, prefetchLeaf);
 }
 
-bool Mesh::hasTransmissiveMaterial() const {
-    for (const auto& material : triangles_.materials)
-        if (material->isTransmissive()) return true;
-    return false;
+const Material* Mesh::primitiveMaterial(std::uint32_t triangle) const {
+    return triangles_.materials.empty()
+               ? material()
+               : triangles_.materials[triangles_.faceMaterials[triangle]].get();
 }
 
 std::size_t Mesh::memoryBytes() const {

@@ -6,7 +6,7 @@
 
 #include "math/Float.h"
 #include "math/Vec2.h"
-#include "render/Sampling.h"
+#include "sampling/Sampling.h"
 
 namespace lancer {
 

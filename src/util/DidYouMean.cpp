@@ -1,4 +1,4 @@
-#include "scene/DidYouMean.h"
+#include "util/DidYouMean.h"
 
 #include <algorithm>
 #include <cctype>

@@ -1,16 +1,18 @@
-#include "scene/SceneLoader.h"
+#include "io/SceneLoader.h"
 
 #include <chrono>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
+#include "accel/Mesh.h"
 #include "geometry/Instance.h"
-#include "geometry/Mesh.h"
 #include "geometry/Plane.h"
 #include "geometry/Quad.h"
 #include "geometry/Sphere.h"
 #include "geometry/Triangle.h"
+#include "integrators/IntegratorRegistry.h"
+#include "io/ImageReader.h"
 #include "io/ObjLoader.h"
 #include "lights/DirectionalLight.h"
 #include "lights/PointLight.h"
@@ -21,7 +23,7 @@
 #include "materials/ConstantTexture.h"
 #include "materials/ImageTexture.h"
 #include "render/Filter.h"
-#include "scene/DidYouMean.h"
+#include "util/DidYouMean.h"
 
 namespace lancer {
 
@@ -40,8 +42,6 @@ std::string describe(const nlohmann::json& v) {
     if (v.is_array()) return "an array of " + std::to_string(v.size());
     return "an object";
 }
-
-const std::vector<std::string> kIntegrators{"whitted", "path", "radiosity"};
 
 }  // namespace
 
@@ -121,11 +121,11 @@ void SceneLoader::loadRender(const Node& node) {
     if (node.has("integrator")) {
         const Node integrator = node["integrator"];
         settings.integrator = readString(integrator);
-        if (std::find(kIntegrators.begin(), kIntegrators.end(), settings.integrator) ==
-            kIntegrators.end())
+        const Registry<IntegratorEntry>& integrators = IntegratorRegistry::table();
+        if (!integrators.find(settings.integrator))
             fail(integrator, "unknown integrator " + inQuotes(settings.integrator) +
-                                 didYouMean(settings.integrator, kIntegrators) +
-                                 "; expected \"whitted\", \"path\" or \"radiosity\"");
+                                 didYouMean(settings.integrator, integrators.names()) +
+                                 "; expected " + integrators.quotedNames());
     }
     if (node.has("filter")) loadFilter(node["filter"]);
     if (node.has("adaptive")) loadAdaptive(node, node["adaptive"]);
@@ -189,8 +189,7 @@ void SceneLoader::loadRadiosity(const Node& node) {
                "subdivision_tolerance", "visibility_rays"});
     RadiositySettings& r = scene_.settings().radiosity;
     if (node.has("patch_size")) r.patchSize = readNumberAtLeast(node["patch_size"], 0, false);
-    if (node.has("element_size"))
-        r.elementSize = readNumberAtLeast(node["element_size"], 0, false);
+    if (node.has("element_size")) r.elementSize = readNumberAtLeast(node["element_size"], 0, false);
     if (node.has("threshold")) {
         r.threshold = readNumberAtLeast(node["threshold"], 0, false);
         if (r.threshold >= 1) fail(node["threshold"], "\"threshold\" must be below 1");
@@ -379,7 +378,7 @@ std::shared_ptr<const Mesh> SceneLoader::loadMesh(const Node& file) {
 std::shared_ptr<const Texture> SceneLoader::loadImageTexture(const std::filesystem::path& path) {
     const std::string key = std::filesystem::weakly_canonical(path).string();
     if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
-    std::shared_ptr<const Texture> texture = ImageTexture::load(path);
+    std::shared_ptr<const Texture> texture = ImageReader::readTexture(path);
     textures_[key] = texture;
     return texture;
 }

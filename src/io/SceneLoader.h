@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/Mesh.h"
+#include "accel/Mesh.h"
 #include "io/JsonDocument.h"
 #include "math/Transform.h"
 #include "scene/Scene.h"

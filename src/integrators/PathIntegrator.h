@@ -1,13 +1,16 @@
 #pragma once
 
+#include <memory>
+
+#include "integrators/LightSampler.h"
 #include "render/Integrator.h"
-#include "render/LightSampler.h"
 
 namespace lancer {
 
 class Bsdf;
 class Scene;
 struct Hit;
+struct IntegratorSetup;
 
 // Unidirectional path tracing (pbrt's PathIntegrator): at every vertex one light, chosen in
 // proportion to power, is sampled (next-event estimation) and one direction is drawn from the
@@ -18,6 +21,7 @@ struct Hit;
 class PathIntegrator final : public Integrator {
 public:
     PathIntegrator(const Scene& scene, int maxDepth);
+    static std::unique_ptr<Integrator> create(const Scene& scene, const IntegratorSetup& setup);
 
     Color radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
                    std::uint64_t& rayCount) const override;
