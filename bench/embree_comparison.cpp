@@ -196,8 +196,9 @@ RaySets makeRays(const BenchMesh& bench, const Mesh& mesh) {
     std::uniform_real_distribution<float> uniform(0, 1);
     sets.shadow.tMax = 1;
     for (const Ray& ray : sets.primary.rays) {
-        Hit hit;
-        if (!mesh.intersect(ray, kInfinity, hit)) continue;
+        const std::optional<Hit> found = mesh.intersect(ray, kInfinity);
+        if (!found) continue;
+        const Hit& hit = *found;
         // Cosine-distributed around the normal on the side the camera sees.
         const Vec3 n = dot(hit.ng, ray.direction) < 0 ? hit.ng : -hit.ng;
         Vec3 s, t;
@@ -397,8 +398,8 @@ PassTime traceOnce(const Structures& s, Tracer tracer, RayKind kind, const Rays&
                 result[i] = s.lancer.occluded(rays.rays[i], tMax) ? 1.0f : 0.0f;
             });
         return traceAll(rays.size(), threads, [&](std::size_t i) {
-            Hit hit;
-            result[i] = s.lancer.intersect(rays.rays[i], tMax, hit) ? hit.t : -1.0f;
+            const std::optional<Hit> hit = s.lancer.intersect(rays.rays[i], tMax);
+            result[i] = hit ? hit->t : -1.0f;
         });
     }
     const EmbreeMesh& embree = s.embree(tracer);

@@ -94,9 +94,9 @@ void Mesh::prefetchPack(std::uint32_t pack) const {
     prefetch(first + sizeof(TrianglePack) - 1);
 }
 
-bool Mesh::intersect(const Ray& ray, float tMax, Hit& hit) const {
+std::optional<Hit> Mesh::intersect(const Ray& ray, float tMax) const {
     const TriangleIntersector intersector(ray);
-    if (!intersector.canHit()) return false;
+    if (!intersector.canHit()) return std::nullopt;
     // Only barycentrics and t during traversal; the hit record is filled once, for the nearest.
     TriangleIntersection nearest{};
     std::uint32_t nearestIndex = 0;
@@ -115,10 +115,10 @@ bool Mesh::intersect(const Ray& ray, float tMax, Hit& hit) const {
         return found;
     };
     const auto prefetchLeaf = [&](std::uint32_t firstPack) { prefetchPack(firstPack); };
-    if (!bvh_.intersect(ray, tMax, intersectLeaf, prefetchLeaf)) return false;
-    Triangle::fillHit(triangles_, nearestIndex, nearest, hit);
+    if (!bvh_.intersect(ray, tMax, intersectLeaf, prefetchLeaf)) return std::nullopt;
+    Hit hit = Triangle::makeHit(triangles_, nearestIndex, nearest);
     hit.shape = this;
-    return true;
+    return hit;
 }
 
 bool Mesh::occluded(const Ray& ray, float tMax) const {
@@ -138,6 +138,28 @@ const Material* Mesh::primitiveMaterial(std::uint32_t triangle) const {
     return triangles_.materials.empty()
                ? material()
                : triangles_.materials[triangles_.faceMaterials[triangle]].get();
+}
+
+std::array<Vec3, 3> Mesh::vertices(std::uint32_t triangle) const {
+    const std::uint32_t* v = &triangles_.indices[3 * std::size_t{triangle}];
+    const std::vector<Vec3>& p = triangles_.positions;
+    return {p[v[0]], p[v[1]], p[v[2]]};
+}
+
+float Mesh::area(std::uint32_t triangle) const {
+    return Triangle::areaOf(vertices(triangle));
+}
+
+std::optional<ShapeSample> Mesh::sample(std::uint32_t triangle, const Vec2& u) const {
+    return Triangle::sampleUniformly(vertices(triangle), u);
+}
+
+Tessellation Mesh::tessellate(const TessellationRequest&) const {
+    Tessellation tessellation;
+    tessellation.facets.reserve(triangles_.triangleCount());
+    for (std::uint32_t i = 0; i < primitiveCount(); ++i)
+        tessellation.facets.push_back({vertices(i), i});
+    return tessellation;
 }
 
 std::size_t Mesh::memoryBytes() const {

@@ -16,7 +16,7 @@ class Mesh final : public Shape {
 public:
     explicit Mesh(TriangleMesh triangles);
 
-    bool intersect(const Ray& ray, float tMax, Hit& hit) const override;
+    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
     bool occluded(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override { return bvh_.bounds(); }
     bool emitsOnBothSides() const override { return false; }
@@ -24,12 +24,17 @@ public:
         return static_cast<std::uint32_t>(triangles_.triangleCount());
     }
     const Material* primitiveMaterial(std::uint32_t triangle) const override;
+    float area(std::uint32_t triangle) const override;
+    std::optional<ShapeSample> sample(std::uint32_t triangle, const Vec2& u) const override;
+    // The triangles as they are.
+    Tessellation tessellate(const TessellationRequest& request) const override;
 
     const TriangleMesh& triangles() const { return triangles_; }
     // Bytes held by the mesh's arrays and its BVH.
     std::size_t memoryBytes() const;
 
 private:
+    std::array<Vec3, 3> vertices(std::uint32_t triangle) const;
     // Asks the cache for a leaf's first pack.
     void prefetchPack(std::uint32_t pack) const;
 

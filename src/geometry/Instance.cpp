@@ -1,5 +1,9 @@
 #include "geometry/Instance.h"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
 namespace lancer {
 
 Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& objectToWorld,
@@ -7,7 +11,13 @@ Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& objectTo
     : Shape(materialOverride),
       shape_(std::move(shape)),
       objectToWorld_(objectToWorld),
-      worldToObject_(objectToWorld.inverse()) {}
+      worldToObject_(objectToWorld.inverse()) {
+    const auto& m = objectToWorld.matrix();
+    determinant_ = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                   m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                   m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    flipsOrientation_ = determinant_ < 0;
+}
 
 const Material* Instance::primitiveMaterial(std::uint32_t primitive) const {
     return material() ? material() : shape_->primitiveMaterial(primitive);
@@ -38,10 +48,12 @@ bool Instance::occluded(const Ray& ray, float tMax) const {
     return shape_->occluded(local, tMax - shift);
 }
 
-bool Instance::intersect(const Ray& ray, float tMax, Hit& hit) const {
+std::optional<Hit> Instance::intersect(const Ray& ray, float tMax) const {
     float shift;
     const Ray local = toObject(ray, shift);
-    if (!shape_->intersect(local, tMax - shift, hit)) return false;
+    std::optional<Hit> found = shape_->intersect(local, tMax - shift);
+    if (!found) return std::nullopt;
+    Hit& hit = *found;
 
     hit.t += shift;
     Vec3 pError;
@@ -53,7 +65,58 @@ bool Instance::intersect(const Ray& ray, float tMax, Hit& hit) const {
     hit.dpdv = objectToWorld_.applyVector(hit.dpdv);
     if (material()) hit.material = material();
     hit.shape = this;
-    return true;
+    return found;
+}
+
+float Instance::areaStretch(const Vec3& n) const {
+    // An area element with normal n becomes |det M| |M^-T n| times as large.
+    return std::abs(determinant_) * length(objectToWorld_.applyNormal(n));
+}
+
+float Instance::largestStretch() const {
+    float stretch = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        Vec3 unit;
+        unit[axis] = 1;
+        stretch = std::max(stretch, length(objectToWorld_.applyVector(unit)));
+    }
+    return stretch;
+}
+
+float Instance::area(std::uint32_t primitive) const {
+    const std::optional<ShapeSample> s = shape_->sample(primitive, Vec2(0.5f, 0.5f));
+    return s ? shape_->area(primitive) * areaStretch(s->n) : shape_->area(primitive);
+}
+
+std::optional<ShapeSample> Instance::sample(std::uint32_t primitive, const Vec2& u) const {
+    std::optional<ShapeSample> s = shape_->sample(primitive, u);
+    if (!s) return std::nullopt;
+    s->pdf /= areaStretch(s->n);
+    s->p = objectToWorld_.applyPoint(s->p);
+    s->n = normalize(objectToWorld_.applyNormal(s->n));
+    return s;
+}
+
+float Instance::areaPdf(std::uint32_t primitive, const Hit& onSurface) const {
+    const Vec3 n = normalize(worldToObject_.applyNormal(onSurface.ng));
+    Hit local = onSurface;
+    local.p = worldToObject_.applyPoint(onSurface.p);
+    local.ng = n;
+    return shape_->areaPdf(primitive, local) / areaStretch(n);
+}
+
+Tessellation Instance::tessellate(const TessellationRequest& request) const {
+    const float stretch = largestStretch();
+    const Bounds3 clipBox = worldToObject_.applyBounds(request.clipBox);
+    Tessellation tessellation = shape_->tessellate({request.patchSize / stretch, clipBox});
+    tessellation.probeDistance *= stretch;
+    for (Tessellation::Facet& facet : tessellation.facets) {
+        for (Vec3& p : facet.corners)
+            p = objectToWorld_.applyPoint(p);
+        // Keep the front on the side the transformed normal is.
+        if (flipsOrientation_) std::swap(facet.corners[1], facet.corners[2]);
+    }
+    return tessellation;
 }
 
 }  // namespace lancer

@@ -15,7 +15,7 @@ public:
     Instance(std::shared_ptr<const Shape> shape, const Transform& objectToWorld,
              const Material* materialOverride = nullptr);
 
-    bool intersect(const Ray& ray, float tMax, Hit& hit) const override;
+    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
     bool occluded(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override;
     bool isBounded() const override { return shape_->isBounded(); }
@@ -23,6 +23,14 @@ public:
     std::uint32_t primitiveCount() const override { return shape_->primitiveCount(); }
     // The instance's own material, when it has one, replaces the shape's.
     const Material* primitiveMaterial(std::uint32_t primitive) const override;
+    // The shape's samples carried into the world, their density divided by how much the
+    // transform stretches the surface there: exact for flat primitives and for similarities,
+    // the stretch at one point for the area of a curved primitive under a non-uniform scale.
+    float area(std::uint32_t primitive) const override;
+    std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const override;
+    float areaPdf(std::uint32_t primitive, const Hit& onSurface) const override;
+    // The shape's facets in the world, asked as fine as the world-space size needs.
+    Tessellation tessellate(const TessellationRequest& request) const override;
 
     const Shape& placedShape() const { return *shape_; }
     const Transform& objectToWorld() const { return objectToWorld_; }
@@ -30,10 +38,17 @@ public:
 private:
     // The ray in the shape's space, and the shift of its parameter t (see intersect).
     Ray toObject(const Ray& ray, float& shift) const;
+    // The factor by which the transform multiplies areas of the surface whose unit normal (in
+    // the shape's space) is n.
+    float areaStretch(const Vec3& n) const;
+    // The longest that a unit vector of the shape's space becomes in the world (about).
+    float largestStretch() const;
 
     std::shared_ptr<const Shape> shape_;
     Transform objectToWorld_;
     Transform worldToObject_;
+    float determinant_;  // of the linear part of objectToWorld
+    bool flipsOrientation_;
 };
 
 }  // namespace lancer

@@ -1,5 +1,10 @@
 #include "geometry/Plane.h"
 
+#include <utility>
+#include <vector>
+
+#include "geometry/ConvexPolygon.h"
+
 namespace lancer {
 
 Plane::Plane(const Vec3& point, const Vec3& normal, const Material* material)
@@ -20,22 +25,23 @@ Bounds3 Plane::bounds() const {
     return {Vec3(-kInfinity), Vec3(kInfinity)};
 }
 
-bool Plane::intersect(const Ray& ray, float tMax, Hit& hit) const {
+std::optional<Hit> Plane::intersect(const Ray& ray, float tMax) const {
     // In double precision, for the same reason as the sphere: the sign of t must be exact for a
     // ray spawned just off the plane.
     const Vec3d n(normal_);
     const Vec3d d(ray.direction);
     const double denominator = dot(n, d);
-    if (denominator == 0) return false;  // parallel: never meets the plane
+    if (denominator == 0) return std::nullopt;  // parallel: never meets the plane
     const Vec3d o(ray.origin);
     const Vec3d p0(point_);
     const double t = dot(n, p0 - o) / denominator;
-    if (!(t > 0 && t < tMax)) return false;
+    if (!(t > 0 && t < tMax)) return std::nullopt;
 
     Vec3d onPlane = o + t * d;
     onPlane -= (dot(n, onPlane - p0) / dot(n, n)) * n;
     const Vec3 p(onPlane);
 
+    Hit hit;
     hit.t = static_cast<float>(t);
     hit.p = p;
     hit.pError = gamma(2) * abs(p);
@@ -47,7 +53,35 @@ bool Plane::intersect(const Ray& ray, float tMax, Hit& hit) const {
     hit.shape = this;
     hit.primitive = 0;
     hit.material = material();
-    return true;
+    return hit;
+}
+
+Tessellation Plane::tessellate(const TessellationRequest& request) const {
+    const Bounds3& box = request.clipBox;
+    // A square around the box's centre, large enough to cover the box, clipped to it.
+    Vec3 a, b;
+    coordinateSystem(normal_, a, b);
+    const Vec3 centre = box.centroid();
+    const Vec3 onPlane = centre - dot(centre - point_, normal_) * normal_;
+    const float half = length(box.diagonal());
+    std::vector<Vec3d> polygon;
+    for (const auto& [s, t] : {std::pair{-1, -1}, {1, -1}, {1, 1}, {-1, 1}})
+        polygon.emplace_back(onPlane +
+                             half * (static_cast<float>(s) * a + static_cast<float>(t) * b));
+    for (int axis = 0; axis < 3 && !polygon.empty(); ++axis) {
+        Vec3d n;
+        n[axis] = 1;
+        polygon = clipPolygon(polygon, n, box.min[axis]);
+        if (!polygon.empty()) polygon = clipPolygon(polygon, -n, -box.max[axis]);
+    }
+    Tessellation tessellation;
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+        std::array<Vec3, 3> t{Vec3(polygon[0]), Vec3(polygon[i]), Vec3(polygon[i + 1])};
+        // The plane's normal is its front.
+        if (dot(cross(t[1] - t[0], t[2] - t[0]), normal_) < 0) std::swap(t[1], t[2]);
+        tessellation.facets.push_back({t, 0});
+    }
+    return tessellation;
 }
 
 }  // namespace lancer

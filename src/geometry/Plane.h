@@ -9,9 +9,16 @@ class Plane final : public Shape {
 public:
     Plane(const Vec3& point, const Vec3& normal, const Material* material);
 
-    bool intersect(const Ray& ray, float tMax, Hit& hit) const override;
+    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override;
     bool isBounded() const override { return false; }
+    // Infinite: a plane cannot be sampled as a light (only rays that hit it find its light).
+    float area(std::uint32_t) const override { return kInfinity; }
+    std::optional<ShapeSample> sample(std::uint32_t, const Vec2&) const override {
+        return std::nullopt;
+    }
+    // The part inside the request's box, as a fan of facets.
+    Tessellation tessellate(const TessellationRequest& request) const override;
 
     const Vec3& point() const { return point_; }
     const Vec3& normal() const { return normal_; }

@@ -18,18 +18,18 @@ Bounds3 Quad::bounds() const {
     return {box.min - slack, box.max + slack};
 }
 
-bool Quad::intersect(const Ray& ray, float tMax, Hit& hit) const {
+std::optional<Hit> Quad::intersect(const Ray& ray, float tMax) const {
     // In double precision, as the plane: the sign of t must be exact for a ray spawned just off
     // the surface, and the edge tests must not let rays slip between two quads sharing an edge.
     const Vec3d e1(edge1_), e2(edge2_);
     const Vec3d n = cross(e1, e2);
     const Vec3d d(ray.direction);
     const double denominator = dot(n, d);
-    if (denominator == 0) return false;  // parallel
+    if (denominator == 0) return std::nullopt;  // parallel
     const Vec3d o(ray.origin);
     const Vec3d c(corner_);
     const double t = dot(n, c - o) / denominator;
-    if (!(t > 0 && t < tMax)) return false;
+    if (!(t > 0 && t < tMax)) return std::nullopt;
 
     // The hit point relative to the corner, projected back onto the plane, then its coordinates
     // along the edges: q = u e1 + v e2 gives q x e2 = u n and e1 x q = v n.
@@ -38,9 +38,10 @@ bool Quad::intersect(const Ray& ray, float tMax, Hit& hit) const {
     q -= (dot(n, q) / nn) * n;
     const double u = dot(cross(q, e2), n) / nn;
     const double v = dot(cross(e1, q), n) / nn;
-    if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) return false;
+    if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) return std::nullopt;
 
     const Vec3 p(c + q);
+    Hit hit;
     hit.t = static_cast<float>(t);
     hit.p = p;
     hit.pError = gamma(2) * abs(p);
@@ -50,8 +51,20 @@ bool Quad::intersect(const Ray& ray, float tMax, Hit& hit) const {
     hit.dpdv = edge2_;
     hit.uv = {static_cast<float>(u), static_cast<float>(v)};
     hit.shape = this;
+    hit.primitive = 0;
     hit.material = material();
-    return true;
+    return hit;
+}
+
+std::optional<ShapeSample> Quad::sample(std::uint32_t, const Vec2& u) const {
+    return ShapeSample{pointAt(u), normal_, 1 / area_};
+}
+
+Tessellation Quad::tessellate(const TessellationRequest&) const {
+    const Vec3 a = corner_, b = a + edge1_, c = b + edge2_, d = a + edge2_;
+    Tessellation tessellation;
+    tessellation.facets = {{{a, b, c}, 0}, {{a, c, d}, 0}};
+    return tessellation;
 }
 
 }  // namespace lancer

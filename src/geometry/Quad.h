@@ -12,16 +12,19 @@ class Quad final : public Shape {
 public:
     Quad(const Vec3& corner, const Vec3& edge1, const Vec3& edge2, const Material* material);
 
-    bool intersect(const Ray& ray, float tMax, Hit& hit) const override;
+    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override;
     bool emitsOnBothSides() const override { return false; }
+    float area(std::uint32_t) const override { return area_; }
+    std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const override;
+    // Two facets, split along the diagonal from the corner.
+    Tessellation tessellate(const TessellationRequest& request) const override;
 
     const Vec3& corner() const { return corner_; }
     const Vec3& edge1() const { return edge1_; }
     const Vec3& edge2() const { return edge2_; }
     // The unit normal on the front side.
     const Vec3& normal() const { return normal_; }
-    float area() const { return area_; }
     // The point at surface coordinates uv.
     Vec3 pointAt(const Vec2& uv) const { return corner_ + uv.x * edge1_ + uv.y * edge2_; }
 

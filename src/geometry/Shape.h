@@ -1,18 +1,24 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 
 #include "geometry/Hit.h"
+#include "geometry/ShapeSample.h"
+#include "geometry/Tessellation.h"
 #include "math/Bounds3.h"
 #include "math/Ray.h"
+#include "math/Vec2.h"
 
 namespace lancer {
 
 class Light;
 class Material;
 
-// A surface a ray can hit. A shape may carry the material it is made of; shapes that carry
-// several (meshes) leave it null and set Hit::material themselves.
+// A surface a ray can hit, sample and mesh. Its surface is made of primitives (a mesh's
+// triangles; the shape itself for the others), numbered as Hit::primitive numbers them, each of
+// one material. Everything integrators, lights and radiosity need of a shape is asked through
+// this interface: none of them needs to know which shape it holds.
 class Shape {
 public:
     explicit Shape(const Material* material) : material_(material) {}
@@ -20,15 +26,15 @@ public:
     Shape(const Shape&) = delete;
     Shape& operator=(const Shape&) = delete;
 
-    // Finds the nearest intersection with 0 < t < tMax. On success fills `hit` (t, p, pError,
-    // ng, ns, dpdu, dpdv, uv, shape, material) and returns true; on failure leaves `hit` untouched.
-    virtual bool intersect(const Ray& ray, float tMax, Hit& hit) const = 0;
+    // The nearest intersection with 0 < t < tMax: a record with every field set (t, p, pError,
+    // ng, ns, dpdu, dpdv, uv, shape, primitive, material; the uv footprint is the caller's), or
+    // nothing.
+    virtual std::optional<Hit> intersect(const Ray& ray, float tMax) const = 0;
 
     // Whether anything is hit with 0 < t < tMax: shadow rays, which need no hit record and can
     // stop at the first hit found.
     virtual bool occluded(const Ray& ray, float tMax) const {
-        Hit hit;
-        return intersect(ray, tMax, hit);
+        return intersect(ray, tMax).has_value();
     }
 
     // The box the shape fits in. Only meaningful when isBounded().
@@ -37,21 +43,45 @@ public:
     virtual bool isBounded() const { return true; }
 
     // Whether a material's emission leaves both sides of the surface (spheres and planes) or
-    // only the side the geometric normal points to (triangles).
+    // only the side the geometric normal points to (triangles, quads).
     virtual bool emitsOnBothSides() const { return true; }
+
+    virtual std::uint32_t primitiveCount() const { return 1; }
+    // The primitive's material; null when it has none of its own.
+    virtual const Material* primitiveMaterial(std::uint32_t) const { return material_; }
+
+    // The primitive's surface area (infinite for planes).
+    virtual float area(std::uint32_t primitive) const = 0;
+    // A point of the primitive, uniformly distributed by area for u uniform in [0,1)^2, with its
+    // density per unit area; nothing for surfaces that cannot be sampled (infinite ones).
+    virtual std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const = 0;
+    // The density per unit area of sample(primitive, ·) at a point of the surface.
+    virtual float areaPdf(std::uint32_t primitive, const Hit& onSurface) const;
+
+    // A point of the primitive for lighting `reference`, with its density per unit solid angle
+    // seen from there. By default the area sample converted; shapes may sample better (the
+    // sphere samples the cone it subtends).
+    virtual std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec3& reference,
+                                              const Vec2& u) const;
+    // The solid-angle density with which sample(primitive, reference, ·) picks the direction wi
+    // that reaches the surface at `onSurface`.
+    virtual float pdf(std::uint32_t primitive, const Vec3& reference, const Vec3& wi,
+                      const Hit& onSurface) const;
+
+    // The surface as flat facets, for radiosity.
+    virtual Tessellation tessellate(const TessellationRequest& request) const = 0;
 
     const Material* material() const { return material_; }
 
-    // The surface is made of primitives (a mesh's triangles; the shape itself for the others),
-    // numbered as Hit::primitive numbers them, each of one material (null: none of its own).
-    virtual std::uint32_t primitiveCount() const { return 1; }
-    virtual const Material* primitiveMaterial(std::uint32_t) const { return material_; }
-
-    // The light whose visible surface this shape is (an area light's quad or sphere, an emissive
-    // surface sampled as a light), or null. Integrators use it to weigh a ray that hits the light
-    // against sampling the light directly.
+    // The light whose visible surface this shape is (an area light of the scene file), or null.
+    // Integrators use it to weigh a ray that hits the light against sampling the light directly.
     const Light* areaLight() const { return areaLight_; }
     void setAreaLight(const Light* light) { areaLight_ = light; }
+
+protected:
+    // A density per unit area at a point seen from distance sqrt(distanceSquared), at cosine
+    // cosSurface to the surface's normal, as a density per unit solid angle: 0 edge-on.
+    static float areaToSolidAngle(float areaPdf, float distanceSquared, float cosSurface);
 
 private:
     const Material* material_;

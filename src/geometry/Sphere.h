@@ -4,17 +4,38 @@
 
 namespace lancer {
 
+// A sphere, two-sided. uv: u the longitude from +x towards -z (counter-clockwise seen from +y),
+// v the latitude from the south pole (0) to the north pole (1). Seen as a light from outside,
+// it is sampled uniformly within the cone it subtends; from inside (or on it), by area.
 class Sphere final : public Shape {
 public:
     Sphere(const Vec3& center, float radius, const Material* material);
 
-    bool intersect(const Ray& ray, float tMax, Hit& hit) const override;
+    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override;
+
+    float area(std::uint32_t primitive) const override;
+    std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const override;
+    std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec3& reference,
+                                      const Vec2& u) const override;
+    float pdf(std::uint32_t primitive, const Vec3& reference, const Vec3& wi,
+              const Hit& onSurface) const override;
+    // A latitude-longitude grid of chords, as fine as the patch size asks.
+    Tessellation tessellate(const TessellationRequest& request) const override;
 
     const Vec3& center() const { return center_; }
     float radius() const { return radius_; }
 
 private:
+    // Whether p is inside the sphere or within rounding error of its surface (hit points on the
+    // sphere itself, from inside or out): from there the whole sphere is seen, which area
+    // sampling covers, while the cone would shrink to the point itself.
+    bool containsOrTouches(const Vec3& p) const;
+    // 1 - cos(theta_max) of the cone the sphere subtends from p, where p is outside it.
+    double oneMinusCosConeAngle(const Vec3& p) const;
+    // The density of directions sampled uniformly within that cone: 1 / (2 pi (1 - cos)).
+    float coneDensity(const Vec3& p) const;
+
     Vec3 center_;
     float radius_;
 };

@@ -29,10 +29,29 @@ Triangle::Triangle(const std::array<Vec3, 3>& vertices, const Material* material
                    const std::optional<std::array<Vec2, 3>>& uvs)
     : Triangle(makeSingleTriangleMesh(vertices, normals, uvs), 0, material) {}
 
-float Triangle::area() const {
-    const std::uint32_t* v = &mesh_->indices[3 * std::size_t{index_}];
-    const std::vector<Vec3>& p = mesh_->positions;
-    return 0.5f * length(cross(p[v[1]] - p[v[0]], p[v[2]] - p[v[0]]));
+float Triangle::areaOf(const std::array<Vec3, 3>& p) {
+    return 0.5f * length(cross(p[1] - p[0], p[2] - p[0]));
+}
+
+float Triangle::area(std::uint32_t) const {
+    return areaOf(vertices());
+}
+
+ShapeSample Triangle::sampleUniformly(const std::array<Vec3, 3>& p, const Vec2& u) {
+    const float su0 = std::sqrt(u.x);
+    const float b0 = 1 - su0, b1 = u.y * su0;
+    return {b0 * p[0] + b1 * p[1] + (1 - b0 - b1) * p[2],
+            normalize(cross(p[1] - p[0], p[2] - p[0])), 1 / areaOf(p)};
+}
+
+std::optional<ShapeSample> Triangle::sample(std::uint32_t, const Vec2& u) const {
+    return sampleUniformly(vertices(), u);
+}
+
+Tessellation Triangle::tessellate(const TessellationRequest&) const {
+    Tessellation tessellation;
+    tessellation.facets = {{vertices(), 0}};
+    return tessellation;
 }
 
 std::array<Vec3, 3> Triangle::vertices() const {
@@ -47,15 +66,16 @@ Bounds3 Triangle::bounds() const {
     return merge(Bounds3(p[v[0]], p[v[1]]), p[v[2]]);
 }
 
-bool Triangle::intersect(const Ray& ray, float tMax, Hit& hit) const {
+std::optional<Hit> Triangle::intersect(const Ray& ray, float tMax) const {
     const std::uint32_t* v = &mesh_->indices[3 * std::size_t{index_}];
     const std::vector<Vec3>& p = mesh_->positions;
     const auto at = intersect(p[v[0]], p[v[1]], p[v[2]], ray, tMax);
-    if (!at) return false;
-    fillHit(*mesh_, index_, *at, hit);
+    if (!at) return std::nullopt;
+    Hit hit = makeHit(*mesh_, index_, *at);
     hit.shape = this;
+    hit.primitive = 0;  // the triangle is this shape's one primitive
     if (material()) hit.material = material();
-    return true;
+    return hit;
 }
 
 std::optional<TriangleIntersection> Triangle::intersect(const Vec3& v0, const Vec3& v1,
@@ -66,8 +86,9 @@ std::optional<TriangleIntersection> Triangle::intersect(const Vec3& v0, const Ve
     return intersector.intersect(v0, v1, v2, tMax);
 }
 
-void Triangle::fillHit(const TriangleMesh& mesh, std::uint32_t index,
-                       const TriangleIntersection& at, Hit& hit) {
+Hit Triangle::makeHit(const TriangleMesh& mesh, std::uint32_t index,
+                      const TriangleIntersection& at) {
+    Hit hit;
     const std::uint32_t* v = &mesh.indices[3 * std::size_t{index}];
     const Vec3& p0 = mesh.positions[v[0]];
     const Vec3& p1 = mesh.positions[v[1]];
@@ -107,6 +128,7 @@ void Triangle::fillHit(const TriangleMesh& mesh, std::uint32_t index,
         coordinateSystem(hit.ng, hit.dpdu, hit.dpdv);  // uvs do not span the triangle
     }
     if (!mesh.materials.empty()) hit.material = mesh.materials[mesh.faceMaterials[index]].get();
+    return hit;
 }
 
 }  // namespace lancer

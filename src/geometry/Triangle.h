@@ -23,11 +23,13 @@ public:
              const std::optional<std::array<Vec3, 3>>& normals = std::nullopt,
              const std::optional<std::array<Vec2, 3>>& uvs = std::nullopt);
 
-    bool intersect(const Ray& ray, float tMax, Hit& hit) const override;
+    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override;
     bool emitsOnBothSides() const override { return false; }
+    float area(std::uint32_t primitive) const override;
+    std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const override;
+    Tessellation tessellate(const TessellationRequest& request) const override;
 
-    float area() const;
     std::array<Vec3, 3> vertices() const;
     std::uint32_t index() const { return index_; }
 
@@ -35,10 +37,14 @@ public:
     static std::optional<TriangleIntersection> intersect(const Vec3& p0, const Vec3& p1,
                                                          const Vec3& p2, const Ray& ray,
                                                          float tMax);
-    // Fills hit's geometry (t, p, pError, normals, dpdu, dpdv, uv) for triangle `index` of `mesh`,
-    // and its material when the mesh has materials.
-    static void fillHit(const TriangleMesh& mesh, std::uint32_t index,
-                        const TriangleIntersection& at, Hit& hit);
+    // The hit record of triangle `index` of `mesh` (primitive `index`), with the mesh's material
+    // for it, if the mesh has materials; `shape` is left to the caller.
+    static Hit makeHit(const TriangleMesh& mesh, std::uint32_t index,
+                       const TriangleIntersection& at);
+    // A point uniformly distributed over the triangle's area for u uniform in [0,1)^2 (the
+    // square-root warp onto barycentrics), with its density per unit area and front normal.
+    static float areaOf(const std::array<Vec3, 3>& vertices);
+    static ShapeSample sampleUniformly(const std::array<Vec3, 3>& vertices, const Vec2& u);
 
 private:
     std::shared_ptr<const TriangleMesh> mesh_;

@@ -4,13 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "accel/Mesh.h"
 #include "geometry/Hit.h"
-#include "geometry/Instance.h"
-#include "geometry/Sphere.h"
-#include "geometry/Triangle.h"
-#include "lights/SphereLight.h"
-#include "lights/TriangleLight.h"
+#include "geometry/Shape.h"
+#include "lights/AreaLight.h"
 #include "materials/Material.h"
 #include "scene/Scene.h"
 
@@ -52,50 +48,12 @@ void LightSampler::addEmitterLight(std::unique_ptr<Light> light, const Shape& pl
     emitterLights_.push_back(std::move(light));
 }
 
-void LightSampler::addEmitters(const Shape& placed) {
-    if (placed.areaLight()) return;  // the surface of a light of the scene file: sampled already
-    // The geometry, and what places it in the world, when `placed` is an instance.
-    const Shape* shape = &placed;
-    const Transform* toWorld = nullptr;
-    const Material* materialOverride = nullptr;
-    if (const auto* instance = dynamic_cast<const Instance*>(&placed)) {
-        shape = &instance->placedShape();
-        toWorld = &instance->objectToWorld();
-        materialOverride = instance->material();
-    }
-    const auto addTriangle = [&](std::array<Vec3, 3> vertices, std::uint32_t index,
-                                 const Material* material) {
-        if (materialOverride) material = materialOverride;
-        if (!material || material->emission.isBlack()) return;
-        Vec3 front = cross(vertices[1] - vertices[0], vertices[2] - vertices[0]);
-        if (toWorld) {
-            // The front side follows the normal as transformed (a mirroring transform turns the
-            // winding around, not the side that emits).
-            front = toWorld->applyNormal(front);
-            for (Vec3& v : vertices)
-                v = toWorld->applyPoint(v);
-        }
-        addEmitterLight(std::make_unique<TriangleLight>(vertices, front, material->emission),
-                        placed, index);
-    };
-    if (const auto* mesh = dynamic_cast<const Mesh*>(shape)) {
-        const TriangleMesh& triangles = mesh->triangles();
-        if (triangles.materials.empty() && !materialOverride) return;
-        for (std::uint32_t i = 0; i < triangles.triangleCount(); ++i) {
-            const std::uint32_t* v = &triangles.indices[3 * std::size_t{i}];
-            const Material* material = triangles.materials.empty()
-                                           ? nullptr
-                                           : triangles.materials[triangles.faceMaterials[i]].get();
-            addTriangle(
-                {triangles.positions[v[0]], triangles.positions[v[1]], triangles.positions[v[2]]},
-                i, material);
-        }
-    } else if (const auto* triangle = dynamic_cast<const Triangle*>(shape)) {
-        addTriangle(triangle->vertices(), triangle->index(), triangle->material());
-    } else if (const auto* sphere = dynamic_cast<const Sphere*>(shape); sphere && !toWorld) {
-        const Material* material = sphere->material();
+void LightSampler::addEmitters(const Shape& shape) {
+    if (shape.areaLight()) return;  // the surface of a light of the scene file: sampled already
+    for (std::uint32_t i = 0; i < shape.primitiveCount(); ++i) {
+        const Material* material = shape.primitiveMaterial(i);
         if (material && !material->emission.isBlack())
-            addEmitterLight(std::make_unique<SphereLight>(*sphere, material->emission), placed, 0);
+            addEmitterLight(std::make_unique<AreaLight>(shape, i, material->emission), shape, i);
     }
 }
 

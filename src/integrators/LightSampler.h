@@ -17,11 +17,10 @@ class Shape;
 struct Hit;
 
 // The lights a path tracer samples: the scene's own (point, directional, spot, quad, sphere) and
-// one for each emissive surface: a TriangleLight per emissive triangle (standalone or a face of a
-// model, per instance, front side only) and a SphereLight per emissive sphere. Instanced spheres
-// and infinite planes that emit are found only by rays that hit them. A light is picked in
-// proportion to its power (the average of its channels), the scene's radius bounding the power
-// of lights at infinity.
+// an AreaLight for each emissive primitive of the shapes in the BVH (a triangle of a model, per
+// instance, a sphere, a quad...), on the sides its shape emits from. Infinite planes that emit are
+// found only by rays that hit them. A light is picked in proportion to its power (the average of
+// its channels), the scene's radius bounding the power of lights at infinity.
 class LightSampler {
 public:
     explicit LightSampler(const Scene& scene);
@@ -40,10 +39,9 @@ public:
     std::size_t size() const { return lights_.size(); }
 
 private:
-    // The lights of a scene shape's emissive surfaces.
-    void addEmitters(const Shape& placed);
-    void addEmitterLight(std::unique_ptr<Light> light, const Shape& placed,
-                         std::uint32_t primitive);
+    // The lights of a scene shape's emissive primitives.
+    void addEmitters(const Shape& shape);
+    void addEmitterLight(std::unique_ptr<Light> light, const Shape& shape, std::uint32_t primitive);
     void addLight(const Light* light);
 
     std::vector<std::unique_ptr<Light>> emitterLights_;  // the lights made for emissive surfaces

@@ -62,11 +62,12 @@ Color PathIntegrator::radiance(const Ray& cameraRay, float, Sampler& sampler,
     Ray ray = cameraRay;
     for (int bounces = 0;; ++bounces) {
         ++rayCount;
-        Hit hit;
-        if (!scene_.intersect(ray, kInfinity, hit)) {
+        const std::optional<Hit> found = scene_.intersect(ray, kInfinity);
+        if (!found) {
             L += throughput * scene_.background();
             break;
         }
+        const Hit& hit = *found;
         const Material& material = *hit.material;
         const Vec3 wo = -normalize(ray.direction);
         if (!material.emission.isBlack() && (hit.frontFace(ray) || hit.shape->emitsOnBothSides())) {

@@ -45,8 +45,9 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
                                std::uint64_t& rayCount) const {
     const Ray& ray = path.ray;
     ++rayCount;
-    Hit hit;
-    if (!scene_.intersect(ray, kInfinity, hit)) return scene_.background();
+    std::optional<Hit> found = scene_.intersect(ray, kInfinity);
+    if (!found) return scene_.background();
+    Hit& hit = *found;
     // Directions are unit vectors, so t is a distance.
     const float distance = path.distance + hit.t;
     setFootprint(hit, ray.direction, distance * path.spread);

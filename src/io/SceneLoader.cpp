@@ -14,10 +14,9 @@
 #include "integrators/IntegratorRegistry.h"
 #include "io/ImageReader.h"
 #include "io/ObjLoader.h"
+#include "lights/AreaLight.h"
 #include "lights/DirectionalLight.h"
 #include "lights/PointLight.h"
-#include "lights/QuadLight.h"
-#include "lights/SphereLight.h"
 #include "lights/SpotLight.h"
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
@@ -328,7 +327,7 @@ void SceneLoader::loadObject(const Node& node) {
             normals = readThree("normals", [&](const Node& n) { return readDirection(n); });
         if (node.has("uvs")) uvs = readThree("uvs", [&](const Node& n) { return readVec2(n); });
         auto triangle = std::make_unique<Triangle>(vertices, materialOf(node), normals, uvs);
-        if (triangle->area() > 0) {
+        if (triangle->area(0) > 0) {
             ++scene_.statistics().uniqueTriangles;
             ++scene_.statistics().instancedTriangles;
             addShape(std::move(triangle), transform());
@@ -472,7 +471,7 @@ void SceneLoader::loadLight(const Node& node) {
                  "(the quad has no area)");
         const Color radiance = readColor(require(node, "radiance", "a quad light"));
         auto surface = std::make_unique<Quad>(corner, edge1, edge2, emitterOf(radiance));
-        auto light = std::make_unique<QuadLight>(*surface, radiance);
+        auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
         addAreaLight(node, std::move(surface), std::move(light));
     } else if (type == "sphere") {
         checkKeys(node, "a sphere light", {"type", "center", "radius", "radiance", "samples"});
@@ -480,7 +479,7 @@ void SceneLoader::loadLight(const Node& node) {
         const float radius = readNumberAtLeast(require(node, "radius", "a sphere light"), 0, false);
         const Color radiance = readColor(require(node, "radiance", "a sphere light"));
         auto surface = std::make_unique<Sphere>(center, radius, emitterOf(radiance));
-        auto light = std::make_unique<SphereLight>(*surface, radiance);
+        auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
         addAreaLight(node, std::move(surface), std::move(light));
     } else {
         fail(node["type"],

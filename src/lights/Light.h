@@ -42,12 +42,6 @@ public:
     int shadowSamples() const { return shadowSamples_; }
     void setShadowSamples(int count) { shadowSamples_ = count; }
 
-protected:
-    // The solid-angle density of a point picked with density 1 / area over a surface, seen from
-    // distance sqrt(distanceSquared) at cosine cosLight to the surface's normal:
-    // d^2 / (area |cosLight|), or 0 where the surface is seen edge-on.
-    static float areaToSolidAngleDensity(float area, float distanceSquared, float cosLight);
-
 private:
     int shadowSamples_ = 1;
 };

@@ -344,10 +344,10 @@ void RadiositySolver::gatherAtVertices(const std::vector<std::uint32_t>& leaves,
         // which the chord to them would meet.)
         if (!patch.curved) {
             const Ray towards{at.surfacePoint, corner - at.surfacePoint};
-            Hit blocker;
             ++rays;
-            if (scene_.intersect(towards, 1, blocker) && blocker.t > 1e-3f)
-                corner = at.surfacePoint + (0.5f * blocker.t) * towards.direction;
+            const std::optional<Hit> blocker = scene_.intersect(towards, 1);
+            if (blocker && blocker->t > 1e-3f)
+                corner = at.surfacePoint + (0.5f * blocker->t) * towards.direction;
         }
         at.centroid = corner + 0.02f * (at.centroid - corner);
         at.surfacePoint = at.centroid;

@@ -7,9 +7,8 @@ namespace lancer {
 
 std::optional<Hit> SurfaceProbe::at(const Patch& patch, const Vec3& point) {
     const Ray ray{point + patch.probeDistance * patch.normal, -patch.normal};
-    Hit hit;
-    if (!patch.surface->intersect(ray, 2 * patch.probeDistance, hit)) return std::nullopt;
-    if (!hit.material) hit.material = patch.material;
+    std::optional<Hit> hit = patch.surface->intersect(ray, 2 * patch.probeDistance);
+    if (hit && !hit->material) hit->material = patch.material;
     return hit;
 }
 

@@ -32,19 +32,22 @@ void Scene::addLight(std::unique_ptr<Light> light) {
     lights_.push_back(std::move(light));
 }
 
-bool Scene::intersect(const Ray& ray, float tMax, Hit& hit) const {
-    bool found = bvh_.intersect(ray, tMax, [&](std::uint32_t k, const Ray& r, float& tFar) {
-        if (!boundedShapes_[k]->intersect(r, tFar, hit)) return false;
-        tFar = hit.t;
+std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {
+    std::optional<Hit> nearest;
+    bvh_.intersect(ray, tMax, [&](std::uint32_t k, const Ray& r, float& tFar) {
+        std::optional<Hit> hit = boundedShapes_[k]->intersect(r, tFar);
+        if (!hit) return false;
+        tFar = hit->t;
+        nearest = std::move(hit);
         return true;
     });
     for (const auto& shape : unboundedShapes_) {
-        if (shape->intersect(ray, tMax, hit)) {
-            tMax = hit.t;
-            found = true;
+        if (std::optional<Hit> hit = shape->intersect(ray, tMax)) {
+            tMax = hit->t;
+            nearest = std::move(hit);
         }
     }
-    return found;
+    return nearest;
 }
 
 bool Scene::occluded(const Ray& ray, float tMax) const {
@@ -74,11 +77,11 @@ Color Scene::transmittance(const Hit& from, const LightSample& light,
             light.atInfinity ? surface.spawnRay(light.wi) : surface.spawnRayTo(light.position);
         const float tMax = light.atInfinity ? kInfinity : 1 - kShadowEpsilon;
         ++rayCount;
-        Hit blocker;
-        if (!intersect(ray, tMax, blocker)) return visibility;
-        visibility *= blocker.material->transmission;
+        const std::optional<Hit> blocker = intersect(ray, tMax);
+        if (!blocker) return visibility;
+        visibility *= blocker->material->transmission;
         if (visibility.isBlack()) return visibility;
-        surface = blocker;
+        surface = *blocker;
     }
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -60,7 +61,7 @@ public:
     Bounds3 bounds() const { return bvh_.bounds(); }
 
     // The nearest hit with 0 < t < tMax, if any.
-    bool intersect(const Ray& ray, float tMax, Hit& hit) const;
+    std::optional<Hit> intersect(const Ray& ray, float tMax) const;
     // Whether anything is hit with 0 < t < tMax.
     bool occluded(const Ray& ray, float tMax) const;
 

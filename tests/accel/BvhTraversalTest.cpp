@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "BvhTestSupport.h"
+#include "IntersectInto.h"
 #include "accel/Bvh.h"
 #include "geometry/Hit.h"
 #include "geometry/Shape.h"
@@ -292,7 +293,7 @@ TEST(BvhTraversal, SpheresAndTrianglesMatchBruteForce) {
     // The strict t < tMax that the occlusion checks rely on is restored here.
     const auto test = [](const Shape& shape, const Ray& r, float tMax) -> std::optional<float> {
         Hit hit;
-        if (!shape.intersect(r, tMax, hit) || !(hit.t < tMax)) return std::nullopt;
+        if (!intersectInto(shape, r, tMax, hit) || !(hit.t < tMax)) return std::nullopt;
         return hit.t;
     };
     expectBvhMatchesBruteForce(

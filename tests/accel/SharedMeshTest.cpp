@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "BvhTestSupport.h"
+#include "IntersectInto.h"
 #include "accel/Mesh.h"
 #include "geometry/Hit.h"
 #include "geometry/Instance.h"
@@ -112,7 +113,7 @@ public:
     // The mesh's closest hit, with the triangle's index in the file's order.
     ClosestHit meshClosest(const Ray& ray) const {
         Hit hit;
-        if (!mesh_.intersect(ray, kInfinity, hit)) return {};
+        if (!intersectInto(mesh_, ray, kInfinity, hit)) return {};
         return {hit.t, triangleOf_.at(hit.material)};
     }
 
@@ -264,7 +265,7 @@ TEST(SharedMesh, EmptyMeshIsNeverHit) {
     EXPECT_TRUE(mesh.bounds().isEmpty());
     for (const Ray& ray : randomRays({Vec3(-1), Vec3(1)}, 1000, 2)) {
         Hit hit;
-        EXPECT_FALSE(mesh.intersect(ray, kInfinity, hit));
+        EXPECT_FALSE(intersectInto(mesh, ray, kInfinity, hit));
         EXPECT_EQ(hit.t, kInfinity) << "the hit record is left untouched";
         EXPECT_FALSE(mesh.occluded(ray, kInfinity));
     }
@@ -285,7 +286,7 @@ TEST(SharedMesh, SingleTriangleMatchesBruteForce) {
     for (const Vec3& origin : {centroid + normal, centroid - normal}) {
         const Ray ray{origin, centroid - origin};
         Hit hit;
-        ASSERT_TRUE(tagged.mesh().intersect(ray, kInfinity, hit));
+        ASSERT_TRUE(intersectInto(tagged.mesh(), ray, kInfinity, hit));
         EXPECT_EQ(hit.t, one.intersect(0, ray, kInfinity));
         EXPECT_NEAR(hit.t, 1, 1e-6);
         EXPECT_TRUE(tagged.mesh().occluded(ray, kInfinity));
@@ -433,7 +434,7 @@ void expectNoRaySlipsThrough(const Shape& shape, const Surface& surface,
             r.passesThrough =
                 passesThrough(worldPoints, surface, aimOf(i).triangles, Vec3d(rays[i].direction));
             Hit hit;
-            r.t = shape.intersect(rays[i], kInfinity, hit) ? hit.t : kInfinity;
+            r.t = intersectInto(shape, rays[i], kInfinity, hit) ? hit.t : kInfinity;
             r.occluded = shape.occluded(rays[i], 1 + kAimTolerance);
         }
     });

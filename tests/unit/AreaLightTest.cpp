@@ -6,11 +6,11 @@
 #include <cmath>
 #include <functional>
 
+#include "IntersectInto.h"
 #include "TestSupport.h"
 #include "geometry/Quad.h"
 #include "geometry/Sphere.h"
-#include "lights/QuadLight.h"
-#include "lights/SphereLight.h"
+#include "lights/AreaLight.h"
 
 namespace lancer {
 namespace {
@@ -55,7 +55,7 @@ double formFactorBelowCorner(double a, double b, double c) {
 // A 2 x 1 rectangle at height 3 facing down, over x in [-1, 1], z in [-0.5, 0.5].
 struct QuadLightFixture {
     Quad surface{Vec3(-1, 3, -0.5f), Vec3(2, 0, 0), Vec3(0, 0, 1), nullptr};
-    QuadLight light{surface, kRadiance};
+    AreaLight light{surface, 0, kRadiance};
 };
 
 TEST(QuadLightTest, IrradianceBelowACornerMatchesTheFormFactor) {
@@ -98,7 +98,7 @@ TEST(QuadLightTest, SampleDensityIsTheDensityOfTheDirectionItPicked) {
         ASSERT_GT(s.pdf, 0);
         // The sample lies on the light, and the ray along wi finds it there.
         Hit hit;
-        ASSERT_TRUE(f.surface.intersect({p, s.wi}, kInfinity, hit));
+        ASSERT_TRUE(test::intersectInto(f.surface, {p, s.wi}, kInfinity, hit));
         EXPECT_VEC3_NEAR(hit.p, s.position, 1e-5);
         EXPECT_NEAR(f.light.pdf(p, s.wi, hit), s.pdf, 1e-4 * s.pdf);
         // In front, the one-sample estimate is radiance / pdf.
@@ -117,7 +117,7 @@ TEST(QuadLightTest, PowerIsPiTimesAreaTimesRadiance) {
 
 struct SphereLightFixture {
     Sphere surface{Vec3(1, 4, -2), 0.5f, nullptr};
-    SphereLight light{surface, kRadiance};
+    AreaLight light{surface, 0, kRadiance};
 };
 
 // A sphere wholly above a surface's horizon gives E = pi L (r / d)^2 cos(beta), beta the angle
@@ -191,7 +191,7 @@ TEST(SphereLightTest, SampleDensityIsTheDensityOfTheDirectionItPicked) {
         const LightSample s = f.light.sample(p, u);
         ASSERT_GT(s.pdf, 0);
         Hit hit;
-        ASSERT_TRUE(f.surface.intersect({p, s.wi}, kInfinity, hit));
+        ASSERT_TRUE(test::intersectInto(f.surface, {p, s.wi}, kInfinity, hit));
         EXPECT_VEC3_NEAR(hit.p, s.position, 1e-4);
         EXPECT_NEAR(f.light.pdf(p, s.wi, hit), s.pdf, 1e-3 * s.pdf);
         expectColorNear(s.irradiance, kRadiance / s.pdf, 1e-6);

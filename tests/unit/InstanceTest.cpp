@@ -5,6 +5,7 @@
 #include <memory>
 #include <random>
 
+#include "IntersectInto.h"
 #include "TestSupport.h"
 #include "geometry/Instance.h"
 #include "geometry/Sphere.h"
@@ -29,11 +30,11 @@ protected:
 TEST_F(EllipsoidTest, RaysHitTheEllipsoidWhereTheImplicitEquationSaysSo) {
     // Along the x axis from far away: the near end is at x = center.x - 3.
     Hit hit;
-    ASSERT_TRUE(ellipsoid.intersect({{-10, 0, 0}, {1, 0, 0}}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(ellipsoid, {{-10, 0, 0}, {1, 0, 0}}, kInfinity, hit));
     EXPECT_NEAR(hit.t, 9 - 0.0f, 1e-5f);  // from -10 to -1
     EXPECT_NEAR(hit.p.x, -1, 1e-5f);
     // Along z: the near end is at z = 0.5.
-    ASSERT_TRUE(ellipsoid.intersect({{2, 0, 10}, {0, 0, -2}}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(ellipsoid, {{2, 0, 10}, {0, 0, -2}}, kInfinity, hit));
     EXPECT_NEAR(hit.p.z, 0.5f, 1e-5f);
     EXPECT_NEAR(hit.t, 4.75f, 1e-5f);  // direction of length 2: t is in ray units
 }
@@ -50,7 +51,8 @@ TEST_F(EllipsoidTest, NormalsAreTheGradientOfTheImplicitEquation) {
         const Vec3 gradient =
             normalize(Vec3(local.x / semiAxes.x, local.y / semiAxes.y, local.z / semiAxes.z));
         Hit hit;
-        ASSERT_TRUE(ellipsoid.intersect({surface + 5.0f * gradient, -gradient}, kInfinity, hit));
+        ASSERT_TRUE(
+            test::intersectInto(ellipsoid, {surface + 5.0f * gradient, -gradient}, kInfinity, hit));
         EXPECT_NEAR(dot(hit.ng, gradient), 1, 1e-4f);
         EXPECT_NEAR(length(hit.p - surface), 0, 1e-4f);
         EXPECT_NEAR(length(hit.p - (surface + 5.0f * gradient - hit.t * gradient)), 0, 1e-4f);
@@ -78,11 +80,11 @@ TEST(InstanceTest, SpawnedRaysNeverFindTheSurfaceTheyLeave) {
         const Vec3 target(1e4f + 200 * unit(rng), -2e3f + 10 * unit(rng), 5e3f + 3 * unit(rng));
         const Vec3 origin = target + 2000.0f * normalize(Vec3(unit(rng), unit(rng), unit(rng)));
         Hit hit;
-        if (!instance.intersect({origin, target - origin}, kInfinity, hit)) continue;
+        if (!test::intersectInto(instance, {origin, target - origin}, kInfinity, hit)) continue;
         Vec3 direction = normalize(Vec3(unit(rng), unit(rng), unit(rng)));
         if (dot(direction, hit.ng) < 0) direction = -direction;  // leaving the ellipsoid
         Hit again;
-        EXPECT_FALSE(instance.intersect(hit.spawnRay(direction), kInfinity, again));
+        EXPECT_FALSE(test::intersectInto(instance, hit.spawnRay(direction), kInfinity, again));
         ++outward;
     }
     EXPECT_GT(outward, 1000);
@@ -94,9 +96,9 @@ TEST(InstanceTest, MaterialOverrideReplacesTheShapesMaterial) {
     const Instance overridden(std::make_shared<Sphere>(Vec3(0), 1.0f, &own), Transform(),
                               &replacement);
     Hit hit;
-    ASSERT_TRUE(plain.intersect({{0, 0, 5}, {0, 0, -1}}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(plain, {{0, 0, 5}, {0, 0, -1}}, kInfinity, hit));
     EXPECT_EQ(hit.material, &own);
-    ASSERT_TRUE(overridden.intersect({{0, 0, 5}, {0, 0, -1}}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(overridden, {{0, 0, 5}, {0, 0, -1}}, kInfinity, hit));
     EXPECT_EQ(hit.material, &replacement);
 }
 
@@ -116,8 +118,8 @@ TEST(InstanceTest, TransformedTriangleMatchesATriangleMadeOfTransformedVertices)
         const Vec3 target = t.applyPoint(Vec3(u, v, 0));
         const Vec3 origin = target + Vec3(3, 4, 5);
         Hit a, b;
-        const bool hitA = instance.intersect({origin, target - origin}, kInfinity, a);
-        const bool hitB = moved.intersect({origin, target - origin}, kInfinity, b);
+        const bool hitA = test::intersectInto(instance, {origin, target - origin}, kInfinity, a);
+        const bool hitB = test::intersectInto(moved, {origin, target - origin}, kInfinity, b);
         ASSERT_EQ(hitA, hitB);
         if (!hitA) continue;
         EXPECT_NEAR(a.t, b.t, 1e-5f);
@@ -135,7 +137,7 @@ TEST(InstanceTest, OcclusionAgreesWithIntersection) {
     EXPECT_TRUE(instance.occluded({{1.9f, 0, 0}, {0, 0, -1}}, kInfinity));
     EXPECT_FALSE(instance.occluded({{1.9f, 0, 0}, {0, 0, -1}}, 4.0f));
     EXPECT_FALSE(instance.occluded({{2.1f, 0, 0}, {0, 0, -1}}, kInfinity));
-    EXPECT_TRUE(instance.intersect({{1.9f, 0, 0}, {0, 0, -1}}, kInfinity, hit));
+    EXPECT_TRUE(test::intersectInto(instance, {{1.9f, 0, 0}, {0, 0, -1}}, kInfinity, hit));
 }
 
 }  // namespace

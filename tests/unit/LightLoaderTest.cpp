@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "IntersectInto.h"
 #include "TestSupport.h"
 #include "io/SceneLoader.h"
-#include "lights/QuadLight.h"
-#include "lights/SphereLight.h"
+#include "lights/AreaLight.h"
 #include "lights/SpotLight.h"
 
 namespace lancer {
@@ -30,15 +30,15 @@ TEST(LightLoaderTest, AQuadLightIsAVisibleSurfaceLinkedToItsLight) {
     const Scene scene = loadLights(R"({ "type": "quad", "corner": [-1, -1, 0], "edge1": [2, 0, 0],
         "edge2": [0, 2, 0], "radiance": [1, 2, 3] })");
     ASSERT_EQ(scene.lights().size(), 1u);
-    const auto* light = dynamic_cast<const QuadLight*>(scene.lights()[0].get());
+    const auto* light = dynamic_cast<const AreaLight*>(scene.lights()[0].get());
     ASSERT_NE(light, nullptr);
     EXPECT_EQ(light->radiance(), Color(1, 2, 3));
     EXPECT_EQ(light->shadowSamples(), 16) << "the default";
-    EXPECT_EQ(light->surface().area(), 4);
-    EXPECT_EQ(light->surface().normal(), Vec3(0, 0, 1));
+    EXPECT_EQ(light->shape().area(0), 4);
+    EXPECT_EQ(light->shape().sample(0, Vec2(0.5f, 0.5f))->n, Vec3(0, 0, 1));
 
     Hit hit;
-    ASSERT_TRUE(scene.intersect({Vec3(0.5f, 0.5f, 5), Vec3(0, 0, -1)}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(scene, {Vec3(0.5f, 0.5f, 5), Vec3(0, 0, -1)}, kInfinity, hit));
     EXPECT_EQ(hit.shape->areaLight(), light);
     EXPECT_EQ(hit.material->emission, Color(1, 2, 3));
     EXPECT_TRUE(hit.material->diffuse->evaluate(hit).isBlack());
@@ -51,12 +51,12 @@ TEST(LightLoaderTest, ASphereLightIsAVisibleSphereLinkedToItsLight) {
     const Scene scene = loadLights(
         R"({ "type": "sphere", "center": [0, 0, -1], "radius": 0.5, "radiance": 7, "samples": 9 })");
     ASSERT_EQ(scene.lights().size(), 1u);
-    const auto* light = dynamic_cast<const SphereLight*>(scene.lights()[0].get());
+    const auto* light = dynamic_cast<const AreaLight*>(scene.lights()[0].get());
     ASSERT_NE(light, nullptr);
     EXPECT_EQ(light->shadowSamples(), 9);
-    EXPECT_EQ(light->surface().radius(), 0.5f);
+    EXPECT_FLOAT_EQ(light->shape().area(0), kPi) << "radius 0.5";
     Hit hit;
-    ASSERT_TRUE(scene.intersect({Vec3(0, 0, 5), Vec3(0, 0, -1)}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(scene, {Vec3(0, 0, 5), Vec3(0, 0, -1)}, kInfinity, hit));
     EXPECT_EQ(hit.t, 5.5f);
     EXPECT_EQ(hit.shape->areaLight(), light);
     EXPECT_EQ(hit.material->emission, Color(7));

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "IntersectInto.h"
 #include "TestSupport.h"
 #include "geometry/Plane.h"
 #include "math/Float.h"
@@ -23,7 +24,7 @@ constexpr float kTolerance = 1e-6f;
 TEST(PlaneTest, HitsFromAbove) {
     const Plane floor(Vec3(0, 0, 0), Vec3(0, 1, 0), nullptr);
     Hit hit;
-    ASSERT_TRUE(floor.intersect({Vec3(1, 2, 3), Vec3(0, -1, 0)}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(floor, {Vec3(1, 2, 3), Vec3(0, -1, 0)}, kInfinity, hit));
     EXPECT_EQ(hit.t, 2);
     EXPECT_EQ(hit.p, Vec3(1, 0, 3));
     EXPECT_EQ(hit.ng, Vec3(0, 1, 0));
@@ -35,7 +36,7 @@ TEST(PlaneTest, IsTwoSidedAndKeepsItsNormal) {
     const Plane floor(Vec3(0, 0, 0), Vec3(0, 1, 0), nullptr);
     const Ray fromBelow{Vec3(1, -2, 3), Vec3(0, 1, 0)};
     Hit hit;
-    ASSERT_TRUE(floor.intersect(fromBelow, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(floor, fromBelow, kInfinity, hit));
     EXPECT_EQ(hit.t, 2);
     EXPECT_EQ(hit.p, Vec3(1, 0, 3));
     EXPECT_EQ(hit.ng, Vec3(0, 1, 0));  // as given, not flipped towards the ray
@@ -45,7 +46,7 @@ TEST(PlaneTest, IsTwoSidedAndKeepsItsNormal) {
 TEST(PlaneTest, NormalIsTheGivenOneNormalized) {
     const Plane wall(Vec3(0, 0, -3), Vec3(0, 0, -2), nullptr);
     Hit hit;
-    ASSERT_TRUE(wall.intersect({Vec3(0.5f, 0.25f, 0), Vec3(0, 0, -1)}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(wall, {Vec3(0.5f, 0.25f, 0), Vec3(0, 0, -1)}, kInfinity, hit));
     EXPECT_EQ(hit.t, 3);
     EXPECT_EQ(hit.ng, Vec3(0, 0, -1));
     EXPECT_EQ(wall.normal(), Vec3(0, 0, -1));
@@ -55,7 +56,7 @@ TEST(PlaneTest, HitsAnObliquePlane) {
     // The plane x + y + z = 3 and a ray along -(1, 1, 1) from (3, 3, 3): it meets it at (1, 1, 1).
     const Plane plane(Vec3(3, 0, 0), Vec3(1, 1, 1), nullptr);
     Hit hit;
-    ASSERT_TRUE(plane.intersect({Vec3(3, 3, 3), Vec3(-1, -1, -1)}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(plane, {Vec3(3, 3, 3), Vec3(-1, -1, -1)}, kInfinity, hit));
     EXPECT_NEAR(hit.t, 2, kTolerance);
     EXPECT_VEC3_NEAR(hit.p, Vec3(1, 1, 1), kTolerance);
     EXPECT_VEC3_NEAR(hit.ng, Vec3(1, 1, 1) / std::sqrt(3.0f), kTolerance);
@@ -64,20 +65,23 @@ TEST(PlaneTest, HitsAnObliquePlane) {
 TEST(PlaneTest, MissesRaysGoingAway) {
     const Plane floor(Vec3(0, 0, 0), Vec3(0, 1, 0), nullptr);
     Hit hit = untouchedHit();
-    EXPECT_FALSE(floor.intersect({Vec3(1, 2, 3), Vec3(0.3f, 1, 0)}, kInfinity, hit));
-    EXPECT_FALSE(floor.intersect({Vec3(1, -2, 3), Vec3(0, -1, 0.2f)}, kInfinity, hit));
+    EXPECT_FALSE(test::intersectInto(floor, {Vec3(1, 2, 3), Vec3(0.3f, 1, 0)}, kInfinity, hit));
+    EXPECT_FALSE(test::intersectInto(floor, {Vec3(1, -2, 3), Vec3(0, -1, 0.2f)}, kInfinity, hit));
     EXPECT_TRUE(isUntouched(hit));
 }
 
 TEST(PlaneTest, ParallelRaysMissWithoutNaN) {
     const Plane floor(Vec3(0, 0, 0), Vec3(0, 1, 0), nullptr);
     Hit hit = untouchedHit();
-    EXPECT_FALSE(floor.intersect({Vec3(0, 1, 0), Vec3(1, 0, 0)}, kInfinity, hit));    // above
-    EXPECT_FALSE(floor.intersect({Vec3(0, 0, 0), Vec3(1, 0, 1)}, kInfinity, hit));    // within
-    EXPECT_FALSE(floor.intersect({Vec3(0, -1, 0), Vec3(-1, 0, 3)}, kInfinity, hit));  // below
+    EXPECT_FALSE(
+        test::intersectInto(floor, {Vec3(0, 1, 0), Vec3(1, 0, 0)}, kInfinity, hit));  // above
+    EXPECT_FALSE(
+        test::intersectInto(floor, {Vec3(0, 0, 0), Vec3(1, 0, 1)}, kInfinity, hit));  // within
+    EXPECT_FALSE(
+        test::intersectInto(floor, {Vec3(0, -1, 0), Vec3(-1, 0, 3)}, kInfinity, hit));  // below
     const Plane tilted(Vec3(1, 2, 3), Vec3(1, 2, -1), nullptr);
     const Vec3 alongTilted = cross(Vec3(1, 2, -1), Vec3(0, 0, 1));
-    EXPECT_FALSE(tilted.intersect({Vec3(1, 2, 3), alongTilted}, kInfinity, hit));
+    EXPECT_FALSE(test::intersectInto(tilted, {Vec3(1, 2, 3), alongTilted}, kInfinity, hit));
     EXPECT_TRUE(isUntouched(hit));
 }
 
@@ -85,10 +89,10 @@ TEST(PlaneTest, RespectsTMax) {
     const Plane floor(Vec3(0, 0, 0), Vec3(0, 1, 0), nullptr);
     const Ray ray{Vec3(1, 2, 3), Vec3(0, -1, 0)};
     Hit hit = untouchedHit();
-    EXPECT_FALSE(floor.intersect(ray, 2, hit));
-    EXPECT_FALSE(floor.intersect(ray, 1, hit));
+    EXPECT_FALSE(test::intersectInto(floor, ray, 2, hit));
+    EXPECT_FALSE(test::intersectInto(floor, ray, 1, hit));
     EXPECT_TRUE(isUntouched(hit));
-    EXPECT_TRUE(floor.intersect(ray, nextFloatUp(2), hit));
+    EXPECT_TRUE(test::intersectInto(floor, ray, nextFloatUp(2), hit));
 }
 
 TEST(PlaneTest, DirectionLengthDoesNotChangeTheHitPoint) {
@@ -100,7 +104,7 @@ TEST(PlaneTest, DirectionLengthDoesNotChangeTheHitPoint) {
         const Vec3 toTarget = point + 10.0f * cross(plane.normal(), random.unitVector()) - origin;
         const Ray ray{origin, toTarget};  // of any length
         Hit hit;
-        ASSERT_TRUE(plane.intersect(ray, kInfinity, hit));
+        ASSERT_TRUE(test::intersectInto(plane, ray, kInfinity, hit));
         // The plane of the float unit normal, the one the code intersects.
         const long double t =
             test::planeRoot(ray, test::toLong(point), test::toLong(plane.normal()));
@@ -108,7 +112,7 @@ TEST(PlaneTest, DirectionLengthDoesNotChangeTheHitPoint) {
         // Power-of-two scales change the direction exactly, so the ray is the same.
         for (float scale : {0x1p-10f, 0.125f, 8.0f, 1024.0f}) {
             Hit scaled;
-            ASSERT_TRUE(plane.intersect({origin, scale * toTarget}, kInfinity, scaled));
+            ASSERT_TRUE(test::intersectInto(plane, {origin, scale * toTarget}, kInfinity, scaled));
             EXPECT_TRUE(isWithinErrorBound(scaled.p, test::toLong(hit.p), hit.pError));
             EXPECT_NEAR(scaled.t * scale, hit.t, kTolerance * hit.t);
         }
@@ -138,7 +142,7 @@ TEST_P(PlaneUvTest, UvAreWorldCoordinatesOnTheAxesNearestThePlane) {
         const Vec3 target = point + cross(c.normal, random.unitVector()) * 10.0f;
         const Vec3 origin = target + 3.0f * random.unitVector();
         Hit hit;
-        if (!plane.intersect({origin, target - origin}, kInfinity, hit)) continue;
+        if (!test::intersectInto(plane, {origin, target - origin}, kInfinity, hit)) continue;
         EXPECT_EQ(hit.uv.x, hit.p[c.uAxis]);
         EXPECT_EQ(hit.uv.y, hit.p[c.vAxis]);
     }
@@ -164,7 +168,7 @@ TEST_P(PlaneErrorBoundTest, ErrorBoundHoldsAgainstAnExtendedPrecisionReference) 
     for (int i = 0; i < 10000; ++i) {
         const Ray ray{point + frame.scale * random.pointInBox(10), random.unitVector()};
         Hit hit;
-        if (!plane.intersect(ray, kInfinity, hit)) continue;
+        if (!test::intersectInto(plane, ray, kInfinity, hit)) continue;
         ASSERT_TRUE(isFiniteHit(hit));
         const long double t = test::planeRoot(ray, test::toLong(point), planeNormal);
         ASSERT_TRUE(isWithinErrorBound(hit.p, test::pointOnRay(ray, t), hit.pError)) << "ray " << i;

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "IntersectInto.h"
 #include "TestSupport.h"
 #include "io/SceneLoader.h"
 #include "scene/InputError.h"
@@ -150,7 +151,7 @@ TEST(SceneLoaderTest, LoadsTheObjects) {
                    Vec3(3, 1, 0.5f)},  // the default-material sphere
          }) {
         Hit hit;
-        ASSERT_TRUE(scene.intersect(probe.ray, kInfinity, hit));
+        ASSERT_TRUE(test::intersectInto(scene, probe.ray, kInfinity, hit));
         EXPECT_VEC3_NEAR(hit.p, probe.expectedPoint, kTolerance);
     }
 }
@@ -194,7 +195,7 @@ TEST(SceneLoaderTest, ZeroAreaTriangleIsDroppedWithAWarning) {
     EXPECT_EQ(warnings[0].rfind(prefix, 0), 0u) << warnings[0] << "\nexpected: " << prefix;
     EXPECT_NE(warnings[0].find("zero area"), std::string::npos) << warnings[0];
     Hit hit;  // the rest of the scene is there
-    EXPECT_TRUE(scene.intersect({Vec3(0, 0, 5), Vec3(0, 0, -1)}, kInfinity, hit));
+    EXPECT_TRUE(test::intersectInto(scene, {Vec3(0, 0, 5), Vec3(0, 0, -1)}, kInfinity, hit));
 }
 
 // --- errors ---

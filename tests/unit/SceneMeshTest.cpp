@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "IntersectInto.h"
 #include "io/SceneLoader.h"
 #include "scene/InputError.h"
 
@@ -54,7 +55,7 @@ protected:
 
     static bool hitsAt(const Scene& scene, const Vec3& origin, const Vec3& direction, Vec3& point) {
         Hit hit;
-        if (!scene.intersect({origin, direction}, kInfinity, hit)) return false;
+        if (!test::intersectInto(scene, {origin, direction}, kInfinity, hit)) return false;
         point = hit.p;
         return true;
     }
@@ -129,8 +130,8 @@ TEST_F(SceneMeshTest, MeshMaterialReplacesTheModelsOwn) {
         load(R"({ "type": "mesh", "file": "models/red.obj", "material": "blue" })",
              R"({ "blue": { "diffuse": [0, 0, 1] } })");
     Hit a, b;
-    ASSERT_TRUE(own.intersect({{0, 0, 5}, {0, 0, -1}}, kInfinity, a));
-    ASSERT_TRUE(replaced.intersect({{0, 0, 5}, {0, 0, -1}}, kInfinity, b));
+    ASSERT_TRUE(test::intersectInto(own, {{0, 0, 5}, {0, 0, -1}}, kInfinity, a));
+    ASSERT_TRUE(test::intersectInto(replaced, {{0, 0, 5}, {0, 0, -1}}, kInfinity, b));
     EXPECT_EQ(a.material->diffuse->evaluate(a), Color(1, 0, 0));
     EXPECT_EQ(b.material->diffuse->evaluate(b), Color(0, 0, 1));
 }

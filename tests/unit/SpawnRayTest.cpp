@@ -11,6 +11,7 @@
 #include <string>
 #include <tuple>
 
+#include "IntersectInto.h"
 #include "TestSupport.h"
 #include "geometry/Plane.h"
 #include "geometry/Sphere.h"
@@ -146,7 +147,7 @@ protected:
         for (;;) {
             const Ray ray = surface_.rayTowardsSurface(random_);
             Hit hit;
-            if (surface_.shape->intersect(ray, kInfinity, hit)) return {ray, hit};
+            if (test::intersectInto(*surface_.shape, ray, kInfinity, hit)) return {ray, hit};
         }
     }
 
@@ -171,7 +172,7 @@ protected:
                    << "the spawned origin is on the wrong side of the surface (signed distance "
                    << static_cast<double>(distance) << ", cos " << cosine << ")";
         Hit again;
-        const bool hitAgain = surface_.shape->intersect(ray, kInfinity, again);
+        const bool hitAgain = test::intersectInto(*surface_.shape, ray, kInfinity, again);
         if (!surface_.isClosed || cosine > 0) {
             if (hitAgain)
                 return testing::AssertionFailure()
@@ -191,7 +192,7 @@ protected:
     testing::AssertionResult shadowRayIsClear(const Hit& hit, const Vec3& target) {
         const Ray ray = hit.spawnRayTo(target);
         Hit blocker;
-        if (surface_.shape->intersect(ray, 1 - kShadowEpsilon, blocker))
+        if (test::intersectInto(*surface_.shape, ray, 1 - kShadowEpsilon, blocker))
             return testing::AssertionFailure()
                    << "the shadow ray is blocked by its own surface at t = " << blocker.t;
         return testing::AssertionSuccess();
@@ -274,7 +275,8 @@ TEST_P(SphereShadowRayTest, ShadowRaysThroughTheSphereAreBlockedByItsFarSide) {
         if (chord < 1e-2f * surface_.radius) continue;  // too grazing to tell the sides apart
         const Vec3 light = hit.p + (chord + 0.5f * surface_.radius) * inwards;
         Hit blocker;
-        ASSERT_TRUE(surface_.shape->intersect(hit.spawnRayTo(light), 1 - kShadowEpsilon, blocker))
+        ASSERT_TRUE(test::intersectInto(*surface_.shape, hit.spawnRayTo(light), 1 - kShadowEpsilon,
+                                        blocker))
             << "ray " << i;
     }
 }

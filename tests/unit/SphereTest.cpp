@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "IntersectInto.h"
 #include "TestSupport.h"
 #include "geometry/Sphere.h"
 #include "math/Float.h"
@@ -24,7 +25,7 @@ constexpr float kTolerance = 1e-6f;
 TEST(SphereTest, HitsTheNearestOfTwoRoots) {
     const Sphere sphere(Vec3(0, 0, 0), 1, nullptr);
     Hit hit;
-    ASSERT_TRUE(sphere.intersect({Vec3(0, 0, 5), Vec3(0, 0, -1)}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(sphere, {Vec3(0, 0, 5), Vec3(0, 0, -1)}, kInfinity, hit));
     EXPECT_EQ(hit.t, 4);  // not 6, the far side
     EXPECT_EQ(hit.p, Vec3(0, 0, 1));
     EXPECT_EQ(hit.ng, Vec3(0, 0, 1));
@@ -37,7 +38,7 @@ TEST(SphereTest, HitsAnOffCentreSphereWhereTheQuadraticSays) {
     // enters at z = 3 + sqrt(4 - 1).
     const Sphere sphere(Vec3(1, 2, 3), 2, nullptr);
     Hit hit;
-    ASSERT_TRUE(sphere.intersect({Vec3(1, 3, 10), Vec3(0, 0, -1)}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(sphere, {Vec3(1, 3, 10), Vec3(0, 0, -1)}, kInfinity, hit));
     const float root3 = std::sqrt(3.0f);
     EXPECT_NEAR(hit.t, 7 - root3, kTolerance);
     EXPECT_VEC3_NEAR(hit.p, Vec3(1, 3, 3 + root3), kTolerance);
@@ -47,22 +48,22 @@ TEST(SphereTest, HitsAnOffCentreSphereWhereTheQuadraticSays) {
 TEST(SphereTest, MissesARayPassingBeside) {
     const Sphere sphere(Vec3(0, 0, 0), 1, nullptr);
     Hit hit = untouchedHit();
-    EXPECT_FALSE(sphere.intersect({Vec3(1.5f, 0, 5), Vec3(0, 0, -1)}, kInfinity, hit));
-    EXPECT_FALSE(sphere.intersect({Vec3(0, 0, 5), Vec3(0, 1, 0)}, kInfinity, hit));
+    EXPECT_FALSE(test::intersectInto(sphere, {Vec3(1.5f, 0, 5), Vec3(0, 0, -1)}, kInfinity, hit));
+    EXPECT_FALSE(test::intersectInto(sphere, {Vec3(0, 0, 5), Vec3(0, 1, 0)}, kInfinity, hit));
     EXPECT_TRUE(isUntouched(hit));
 }
 
 TEST(SphereTest, DoesNotReportAHitBehindTheOrigin) {
     const Sphere sphere(Vec3(0, 0, -5), 1, nullptr);
     Hit hit = untouchedHit();
-    EXPECT_FALSE(sphere.intersect({Vec3(0, 0, 0), Vec3(0, 0, 1)}, kInfinity, hit));
+    EXPECT_FALSE(test::intersectInto(sphere, {Vec3(0, 0, 0), Vec3(0, 0, 1)}, kInfinity, hit));
     EXPECT_TRUE(isUntouched(hit));
 }
 
 TEST(SphereTest, FromInsideHitsTheFarSide) {
     const Sphere sphere(Vec3(0, 0, 0), 1, nullptr);
     Hit hit;
-    ASSERT_TRUE(sphere.intersect({Vec3(0, 0, 0.5f), Vec3(0, 0, -1)}, kInfinity, hit));
+    ASSERT_TRUE(test::intersectInto(sphere, {Vec3(0, 0, 0.5f), Vec3(0, 0, -1)}, kInfinity, hit));
     EXPECT_EQ(hit.t, 1.5f);
     EXPECT_EQ(hit.p, Vec3(0, 0, -1));
     EXPECT_EQ(hit.ng, Vec3(0, 0, -1));  // still the outward normal
@@ -73,14 +74,15 @@ TEST(SphereTest, RespectsTMax) {
     const Sphere sphere(Vec3(0, 0, 0), 1, nullptr);
     const Ray fromOutside{Vec3(0, 0, 5), Vec3(0, 0, -1)};  // roots 4 and 6
     Hit hit = untouchedHit();
-    EXPECT_FALSE(sphere.intersect(fromOutside, 4, hit));  // the range is open: t < tMax
-    EXPECT_FALSE(sphere.intersect(fromOutside, 3, hit));
+    EXPECT_FALSE(test::intersectInto(sphere, fromOutside, 4, hit));  // the range is open: t < tMax
+    EXPECT_FALSE(test::intersectInto(sphere, fromOutside, 3, hit));
     const Ray fromCentre{Vec3(0, 0, 0), Vec3(1, 0, 0)};  // roots -1 and 1
-    EXPECT_FALSE(sphere.intersect(fromCentre, 0.999f, hit));
+    EXPECT_FALSE(test::intersectInto(sphere, fromCentre, 0.999f, hit));
     EXPECT_TRUE(isUntouched(hit));
-    ASSERT_TRUE(sphere.intersect(fromOutside, 5, hit));  // between the roots: the near one
+    ASSERT_TRUE(
+        test::intersectInto(sphere, fromOutside, 5, hit));  // between the roots: the near one
     EXPECT_EQ(hit.t, 4);
-    ASSERT_TRUE(sphere.intersect(fromOutside, nextFloatUp(4), hit));
+    ASSERT_TRUE(test::intersectInto(sphere, fromOutside, nextFloatUp(4), hit));
     EXPECT_EQ(hit.t, 4);
 }
 
@@ -88,7 +90,7 @@ TEST(SphereTest, RespectsTMax) {
 // at y = -1.5 and y = -2.5, through it in between.
 bool intersectAtHeight(float y, Hit& hit) {
     const Sphere sphere(Vec3(3, -2, 5), 0.5f, nullptr);
-    return sphere.intersect({Vec3(-7, y, 5), Vec3(1, 0, 0)}, kInfinity, hit);
+    return test::intersectInto(sphere, {Vec3(-7, y, 5), Vec3(1, 0, 0)}, kInfinity, hit);
 }
 
 TEST(SphereTest, TangentRayIsHandledWithoutNaN) {
@@ -126,14 +128,14 @@ TEST(SphereTest, DirectionLengthDoesNotChangeTheHitPoint) {
         const Vec3 toTarget = center + 1.3f * random.unitVector() - origin;
         const Ray ray{origin, toTarget};  // of any length
         Hit hit;
-        ASSERT_TRUE(sphere.intersect(ray, kInfinity, hit));
+        ASSERT_TRUE(test::intersectInto(sphere, ray, kInfinity, hit));
         const auto roots = test::sphereRoots(ray, center, 1.3f);
         const long double t = roots->first > 0 ? roots->first : roots->second;
         EXPECT_TRUE(isWithinErrorBound(hit.p, test::pointOnRay(ray, t), hit.pError));
         // Power-of-two scales change the direction exactly, so the ray is the same.
         for (float scale : {0x1p-10f, 0.125f, 8.0f, 1024.0f}) {
             Hit scaled;
-            ASSERT_TRUE(sphere.intersect({origin, scale * toTarget}, kInfinity, scaled));
+            ASSERT_TRUE(test::intersectInto(sphere, {origin, scale * toTarget}, kInfinity, scaled));
             EXPECT_TRUE(isWithinErrorBound(scaled.p, test::toLong(hit.p), hit.pError));
             EXPECT_NEAR(scaled.t * scale, hit.t, kTolerance * hit.t);
         }
@@ -147,7 +149,7 @@ TEST(SphereTest, NormalPointsOutwardFromTheCentre) {
     for (int i = 0; i < 1000; ++i) {
         const Ray ray{random.pointInBox(4), random.unitVector()};
         Hit hit;
-        if (!sphere.intersect(ray, kInfinity, hit)) continue;
+        if (!test::intersectInto(sphere, ray, kInfinity, hit)) continue;
         EXPECT_VEC3_NEAR(hit.ng, (hit.p - center) / 1.3f, kTolerance);
         EXPECT_NEAR(length(hit.ng), 1, kTolerance);
         EXPECT_EQ(hit.ns, hit.ng);
@@ -167,7 +169,7 @@ Vec3 pointAtUv(double u, double v) {
 Hit hitUnitSphereAt(const Vec3& n) {
     static const Sphere sphere(Vec3(0, 0, 0), 1, nullptr);
     Hit hit;
-    EXPECT_TRUE(sphere.intersect({3.0f * n, -n}, kInfinity, hit));
+    EXPECT_TRUE(test::intersectInto(sphere, {3.0f * n, -n}, kInfinity, hit));
     return hit;
 }
 
@@ -221,7 +223,7 @@ TEST_P(SphereErrorBoundTest, ErrorBoundHoldsAgainstAnExtendedPrecisionReference)
         const Vec3 target = center + radius * random.unitVector();
         const Ray ray{origin, target - origin};
         Hit hit;
-        if (!sphere.intersect(ray, kInfinity, hit)) continue;
+        if (!test::intersectInto(sphere, ray, kInfinity, hit)) continue;
         ++hits;
         const auto roots = test::sphereRoots(ray, center, radius);
         ASSERT_TRUE(roots.has_value());

@@ -1,0 +1,37 @@
+#include "lights/AreaLight.h"
+
+#include <cmath>
+
+#include "geometry/Shape.h"
+#include "math/Float.h"
+
+namespace lancer {
+
+AreaLight::AreaLight(const Shape& shape, std::uint32_t primitive, const Color& radiance)
+    : shape_(shape), primitive_(primitive), radiance_(radiance) {}
+
+LightSample AreaLight::sample(const Vec3& p, const Vec2& u) const {
+    LightSample s;
+    const std::optional<ShapeSample> onLight = shape_.sample(primitive_, p, u);
+    if (!onLight) return s;
+    const Vec3 toLight = onLight->p - p;
+    const float distanceSquared = lengthSquared(toLight);
+    if (!(distanceSquared > 0)) return s;  // p on the light itself: no direction, no light
+    s.position = onLight->p;
+    s.wi = toLight / std::sqrt(distanceSquared);
+    s.pdf = onLight->pdf;
+    // A one-sided emitter seen from behind shows its dark back.
+    const bool seesEmittingSide = shape_.emitsOnBothSides() || dot(onLight->n, s.wi) < 0;
+    if (seesEmittingSide && s.pdf > 0 && std::isfinite(s.pdf)) s.irradiance = radiance_ / s.pdf;
+    return s;
+}
+
+float AreaLight::pdf(const Vec3& p, const Vec3& wi, const Hit& onLight) const {
+    return shape_.pdf(primitive_, p, wi, onLight);
+}
+
+Color AreaLight::power(float) const {
+    return kPi * shape_.area(primitive_) * radiance_;
+}
+
+}  // namespace lancer
