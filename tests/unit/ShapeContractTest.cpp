@@ -1,0 +1,228 @@
+// What the Shape interface promises, checked on every shape alike: each hit record is complete
+// and fresh (every field set, dpdu/dpdv the derivatives of the surface's own uv
+// parameterisation), samples lie on the surface with the density they claim, and the solid-angle
+// densities integrate to one over the directions that see the shape.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "TestSupport.h"
+#include "accel/Mesh.h"
+#include "geometry/Instance.h"
+#include "geometry/Plane.h"
+#include "geometry/Quad.h"
+#include "geometry/Sphere.h"
+#include "geometry/Triangle.h"
+#include "materials/Material.h"
+#include "math/Transform.h"
+
+namespace lancer {
+namespace {
+
+using test::Random;
+
+const Material kMaterial;
+
+struct ShapeCase {
+    std::string name;
+    std::function<std::unique_ptr<Shape>()> make;
+    // Whether every point the area sampling picks is the first surface seen from outside along
+    // its direction (so that the solid-angle densities integrate to one).
+    bool samplesAreVisible;
+};
+
+std::unique_ptr<Shape> makeMesh() {
+    TriangleMesh m;
+    m.positions = {{-1, 0, -1}, {1, 0, -1}, {1, 0.5f, 1}, {-1, 0.5f, 1}};
+    m.uvs = {{0, 0}, {2, 0}, {2, 1}, {0, 1}};
+    m.indices = {0, 2, 1, 0, 3, 2};
+    m.faceMaterials = {0, 0};
+    return std::make_unique<Mesh>(std::move(m));
+}
+
+std::vector<ShapeCase> shapeCases() {
+    const Transform stretchAndTurn = Transform::translate(Vec3(0.5f, -0.25f, 0.3f)) *
+                                     Transform::rotate(35, Vec3(1, 2, 0.5f)) *
+                                     Transform::scale(Vec3(1.5f, 0.75f, 1));
+    return {
+        {"Sphere",
+         [] { return std::make_unique<Sphere>(Vec3(0.2f, -0.1f, 0.3f), 0.8f, &kMaterial); }, true},
+        {"Plane",
+         [] { return std::make_unique<Plane>(Vec3(0, -0.5f, 0), Vec3(0.2f, 1, 0.1f), &kMaterial); },
+         true},
+        {"Quad",
+         [] {
+             return std::make_unique<Quad>(Vec3(-1, 0, -0.5f), Vec3(2, 0.2f, 0),
+                                           Vec3(0.1f, 0.3f, 1.2f), &kMaterial);
+         },
+         true},
+        {"Triangle",
+         [] {
+             return std::make_unique<Triangle>(
+                 std::array<Vec3, 3>{Vec3(-1, 0, -1), Vec3(1, 0.2f, -0.8f), Vec3(0, 0.5f, 1)},
+                 &kMaterial, std::nullopt,
+                 std::array<Vec2, 3>{Vec2(0.1f, 0.2f), Vec2(0.9f, 0.1f), Vec2(0.4f, 0.8f)});
+         },
+         true},
+        {"Mesh", makeMesh, true},
+        {"InstancedSphere",
+         [=] {
+             return std::make_unique<Instance>(std::make_shared<Sphere>(Vec3(0), 0.7f, nullptr),
+                                               stretchAndTurn, &kMaterial);
+         },
+         false},
+        {"InstancedQuad",
+         [=] {
+             return std::make_unique<Instance>(
+                 std::make_shared<Quad>(Vec3(-1, 0, -1), Vec3(2, 0, 0), Vec3(0, 0, 2), nullptr),
+                 stretchAndTurn, &kMaterial);
+         },
+         true},
+        {"InstancedMesh",
+         [=] {
+             return std::make_unique<Instance>(std::shared_ptr<Shape>(makeMesh()), stretchAndTurn,
+                                               &kMaterial);
+         },
+         true},
+    };
+}
+
+class ShapeContract : public testing::TestWithParam<ShapeCase> {
+protected:
+    void SetUp() override { shape = GetParam().make(); }
+
+    // Points of the surface to aim at: samples of the bounded shapes, a patch of the plane.
+    Vec3 target(Random& random) const {
+        const Vec2 u(static_cast<float>(random.uniform(0.05, 0.95)),
+                     static_cast<float>(random.uniform(0.05, 0.95)));
+        const std::uint32_t primitive =
+            static_cast<std::uint32_t>(random.uniform() * shape->primitiveCount()) %
+            shape->primitiveCount();
+        if (const auto s = shape->sample(primitive, u)) return s->p;
+        return Vec3(4 * u.x - 2, -0.5f, 4 * u.y - 2);  // on the plane, nearly
+    }
+
+    std::unique_ptr<Shape> shape;
+};
+
+TEST_P(ShapeContract, EveryFieldOfTheRecordIsSet) {
+    Random random(7);
+    for (int i = 0; i < 200; ++i) {
+        const Vec3 aim = target(random);
+        const Vec3 origin = aim + 5.0f * random.unitVector();
+        const Ray ray{origin, normalize(aim - origin)};
+        const std::optional<Hit> hit = shape->intersect(ray, kInfinity);
+        if (!hit) continue;
+        EXPECT_GT(hit->t, 0);
+        EXPECT_LT(length(hit->p - ray.at(hit->t)), 1e-4f);
+        EXPECT_NEAR(length(hit->ng), 1, 1e-5f);
+        EXPECT_NEAR(length(hit->ns), 1, 1e-5f);
+        EXPECT_GT(dot(hit->ns, hit->ng), 0);
+        EXPECT_TRUE(isFinite(hit->pError) && hit->pError.x >= 0 && hit->pError.y >= 0 &&
+                    hit->pError.z >= 0);
+        EXPECT_GT(lengthSquared(cross(hit->dpdu, hit->dpdv)), 0)
+            << "dpdu and dpdv span the surface";
+        EXPECT_NEAR(dot(hit->dpdu, hit->ng), 0, 1e-3f * length(hit->dpdu));
+        EXPECT_NEAR(dot(hit->dpdv, hit->ng), 0, 1e-3f * length(hit->dpdv));
+        EXPECT_TRUE(std::isfinite(hit->uv.x) && std::isfinite(hit->uv.y));
+        EXPECT_EQ(hit->shape, shape.get());
+        ASSERT_LT(hit->primitive, shape->primitiveCount());
+        EXPECT_EQ(hit->material, shape->primitiveMaterial(hit->primitive));
+        EXPECT_EQ(hit->dudx, 0);  // the footprint is the integrator's
+    }
+}
+
+TEST_P(ShapeContract, DpduAndDpdvAreTheDerivativesOfTheUvParameterisation) {
+    Random random(11);
+    int checked = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Vec3 aim = target(random);
+        const Vec3 origin = aim + 5.0f * random.unitVector();
+        const auto first = shape->intersect({origin, normalize(aim - origin)}, kInfinity);
+        if (!first) continue;
+        // A second point a small step away on the tangent plane, found by a ray from the same
+        // origin: to first order p2 - p1 = dpdu du + dpdv dv.
+        Vec3 a, b;
+        coordinateSystem(first->ng, a, b);
+        const float step = 1e-3f;
+        const Vec3 aim2 = first->p + step * (a * 0.6f + b * 0.8f);
+        const auto second = shape->intersect({origin, normalize(aim2 - origin)}, kInfinity);
+        if (!second || second->primitive != first->primitive) continue;
+        const Vec2 duv = second->uv - first->uv;
+        if (std::abs(duv.x) > 0.25f || std::abs(duv.y) > 0.25f) continue;  // across a uv seam
+        const Vec3 moved = second->p - first->p;
+        const Vec3 predicted = duv.x * first->dpdu + duv.y * first->dpdv;
+        EXPECT_LT(length(moved - predicted), 0.02f * length(moved))
+            << "moved by " << length(moved) << ", off by " << length(moved - predicted);
+        ++checked;
+    }
+    EXPECT_GT(checked, 50);
+}
+
+TEST_P(ShapeContract, AreaSamplesLieOnTheSurfaceWithDensityOneOverTheArea) {
+    if (!shape->isBounded()) {
+        EXPECT_FALSE(shape->sample(0, Vec2(0.5f, 0.5f))) << "an infinite surface is not sampled";
+        return;
+    }
+    Random random(13);
+    for (int i = 0; i < 200; ++i) {
+        const auto primitive = static_cast<std::uint32_t>(i) % shape->primitiveCount();
+        const Vec2 u(static_cast<float>(random.uniform()), static_cast<float>(random.uniform()));
+        const std::optional<ShapeSample> s = shape->sample(primitive, u);
+        ASSERT_TRUE(s);
+        EXPECT_NEAR(length(s->n), 1, 1e-5f);
+        // Found again by a ray from off the surface along the normal.
+        const auto hit = shape->intersect({s->p + 1e-2f * s->n, -s->n}, 2e-2f);
+        ASSERT_TRUE(hit);
+        EXPECT_LT(length(hit->p - s->p), 1e-4f);
+        EXPECT_GT(dot(hit->ng, s->n), 0.999f) << "the sample's normal is the front's";
+        EXPECT_NEAR(s->pdf, shape->areaPdf(primitive, *hit), 1e-3f * s->pdf);
+    }
+}
+
+TEST_P(ShapeContract, SolidAngleDensitiesAgreeWithTheSamplesAndIntegrateToOne) {
+    if (!shape->isBounded()) return;
+    const Vec3 reference(0.3f, 2.5f, -1.7f);
+    Random random(17);
+    for (std::uint32_t primitive = 0; primitive < shape->primitiveCount(); ++primitive) {
+        for (int i = 0; i < 100; ++i) {
+            const Vec2 u(static_cast<float>(random.uniform()),
+                         static_cast<float>(random.uniform()));
+            const auto s = shape->sample(primitive, reference, u);
+            if (!s) continue;
+            const Vec3 wi = normalize(s->p - reference);
+            const auto hit = shape->intersect({reference, wi}, kInfinity);
+            ASSERT_TRUE(hit);
+            // Points hidden behind the surface, and grazing ones (where a point a rounding error
+            // away has a very different density), are not the ones to compare.
+            if (hit->primitive != primitive || length(hit->p - s->p) > 1e-3f ||
+                std::abs(dot(hit->ng, wi)) < 0.1f)
+                continue;
+            EXPECT_NEAR(shape->pdf(primitive, reference, wi, *hit), s->pdf, 2e-3f * s->pdf);
+        }
+        if (!GetParam().samplesAreVisible) continue;
+        // Over uniformly random directions, pdf / (1 / 4 pi) averages to one.
+        constexpr int kDirections = 400000;
+        double sum = 0;
+        for (int i = 0; i < kDirections; ++i) {
+            const Vec3 wi = random.unitVector();
+            const auto hit = shape->intersect({reference, wi}, kInfinity);
+            if (hit && hit->primitive == primitive)
+                sum += shape->pdf(primitive, reference, wi, *hit);
+        }
+        EXPECT_NEAR(sum * 4 * 3.14159265358979323846 / kDirections, 1, 0.03)
+            << "primitive " << primitive;
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(AllShapes, ShapeContract, testing::ValuesIn(shapeCases()),
+                         [](const testing::TestParamInfo<ShapeCase>& param) {
+                             return param.param.name;
+                         });
+
+}  // namespace
+}  // namespace lancer
