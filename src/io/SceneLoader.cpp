@@ -44,6 +44,28 @@ std::string describe(const nlohmann::json& v) {
 
 }  // namespace
 
+// The scene file's object and light types: one registration line each.
+const Registry<SceneLoader::ObjectType>& SceneLoader::objectTypes() {
+    static const Registry<ObjectType> types{
+        {"sphere", &SceneLoader::loadSphere},
+        {"plane", &SceneLoader::loadPlane},
+        {"triangle", &SceneLoader::loadTriangle},
+        {"mesh", &SceneLoader::loadMeshObject},
+    };
+    return types;
+}
+
+const Registry<SceneLoader::LightType>& SceneLoader::lightTypes() {
+    static const Registry<LightType> types{
+        {"point", &SceneLoader::loadPointLight},
+        {"directional", &SceneLoader::loadDirectionalLight},
+        {"spot", &SceneLoader::loadSpotLight},
+        {"quad", &SceneLoader::loadQuadLight},
+        {"sphere", &SceneLoader::loadSphereLight},
+    };
+    return types;
+}
+
 SceneLoader::Node SceneLoader::Node::operator[](const std::string& key) const {
     return {value.at(key), JsonDocument::child(pointer, key), inQuotes(key)};
 }
@@ -292,59 +314,67 @@ const Material* SceneLoader::materialOf(const Node& object) {
 
 void SceneLoader::loadObject(const Node& node) {
     requireObject(node, "an object");
-    const std::string type = readString(require(node, "type", "an object"));
-    const auto transform = [&]() -> std::optional<Transform> {
-        if (!node.has("transform")) return std::nullopt;
-        return readTransform(node["transform"]);
+    const Node typeNode = require(node, "type", "an object");
+    const std::string type = readString(typeNode);
+    const ObjectType* entry = objectTypes().find(type);
+    if (!entry)
+        fail(typeNode, "unknown object type " + inQuotes(type) +
+                           didYouMean(type, objectTypes().names()) + "; expected " +
+                           objectTypes().quotedNames());
+    std::optional<Transform> transform;
+    if (node.has("transform")) transform = readTransform(node["transform"]);
+    (this->*entry->load)(node, transform);
+}
+
+void SceneLoader::loadSphere(const Node& node, const std::optional<Transform>& transform) {
+    checkKeys(node, "a sphere", {"type", "center", "radius", "material", "transform"});
+    const Vec3 center = readVec3(require(node, "center", "a sphere"));
+    const float radius = readNumberAtLeast(require(node, "radius", "a sphere"), 0, false);
+    addShape(std::make_unique<Sphere>(center, radius, materialOf(node)), transform);
+}
+
+void SceneLoader::loadPlane(const Node& node, const std::optional<Transform>& transform) {
+    checkKeys(node, "a plane", {"type", "point", "normal", "material", "transform"});
+    const Vec3 point = readVec3(require(node, "point", "a plane"));
+    const Vec3 normal = readDirection(require(node, "normal", "a plane"));
+    addShape(std::make_unique<Plane>(point, normal, materialOf(node)), transform);
+}
+
+void SceneLoader::loadTriangle(const Node& node, const std::optional<Transform>& transform) {
+    checkKeys(node, "a triangle", {"type", "vertices", "normals", "uvs", "material", "transform"});
+    const auto readThree = [&](const std::string& key, auto read) {
+        const Node list = require(node, key, "a triangle");
+        if (!list.value.is_array() || list.value.size() != 3)
+            fail(list, inQuotes(key) + " must be an array of 3, got " + describe(list.value));
+        using T = decltype(read(list));
+        std::array<T, 3> out;
+        for (std::size_t i = 0; i < 3; ++i)
+            out[i] = read(list.at(i));
+        return out;
     };
-    if (type == "sphere") {
-        checkKeys(node, "a sphere", {"type", "center", "radius", "material", "transform"});
-        const Vec3 center = readVec3(require(node, "center", "a sphere"));
-        const float radius = readNumberAtLeast(require(node, "radius", "a sphere"), 0, false);
-        addShape(std::make_unique<Sphere>(center, radius, materialOf(node)), transform());
-    } else if (type == "plane") {
-        checkKeys(node, "a plane", {"type", "point", "normal", "material", "transform"});
-        const Vec3 point = readVec3(require(node, "point", "a plane"));
-        const Vec3 normal = readDirection(require(node, "normal", "a plane"));
-        addShape(std::make_unique<Plane>(point, normal, materialOf(node)), transform());
-    } else if (type == "triangle") {
-        checkKeys(node, "a triangle",
-                  {"type", "vertices", "normals", "uvs", "material", "transform"});
-        const auto readThree = [&](const std::string& key, auto read) {
-            const Node list = require(node, key, "a triangle");
-            if (!list.value.is_array() || list.value.size() != 3)
-                fail(list, inQuotes(key) + " must be an array of 3, got " + describe(list.value));
-            using T = decltype(read(list));
-            std::array<T, 3> out;
-            for (std::size_t i = 0; i < 3; ++i)
-                out[i] = read(list.at(i));
-            return out;
-        };
-        const auto vertices = readThree("vertices", [&](const Node& n) { return readVec3(n); });
-        std::optional<std::array<Vec3, 3>> normals;
-        std::optional<std::array<Vec2, 3>> uvs;
-        if (node.has("normals"))
-            normals = readThree("normals", [&](const Node& n) { return readDirection(n); });
-        if (node.has("uvs")) uvs = readThree("uvs", [&](const Node& n) { return readVec2(n); });
-        auto triangle = std::make_unique<Triangle>(vertices, materialOf(node), normals, uvs);
-        if (triangle->area(0) > 0) {
-            ++scene_.statistics().uniqueTriangles;
-            ++scene_.statistics().instancedTriangles;
-            addShape(std::move(triangle), transform());
-        } else
-            warn(node["vertices"], "triangle has zero area and is left out");
-    } else if (type == "mesh") {
-        checkKeys(node, "a mesh", {"type", "file", "material", "transform"});
-        std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", "a mesh"));
-        scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
-        // Without "material", the model's own materials (from its .mtl) are used.
-        const Material* material = node.has("material") ? materialOf(node) : nullptr;
-        scene_.addShape(std::make_unique<Instance>(std::move(mesh),
-                                                   transform().value_or(Transform()), material));
-    } else {
-        fail(node["type"], "unknown object type " + inQuotes(type) +
-                               didYouMean(type, {"sphere", "plane", "triangle", "mesh"}));
-    }
+    const auto vertices = readThree("vertices", [&](const Node& n) { return readVec3(n); });
+    std::optional<std::array<Vec3, 3>> normals;
+    std::optional<std::array<Vec2, 3>> uvs;
+    if (node.has("normals"))
+        normals = readThree("normals", [&](const Node& n) { return readDirection(n); });
+    if (node.has("uvs")) uvs = readThree("uvs", [&](const Node& n) { return readVec2(n); });
+    auto triangle = std::make_unique<Triangle>(vertices, materialOf(node), normals, uvs);
+    if (triangle->area(0) > 0) {
+        ++scene_.statistics().uniqueTriangles;
+        ++scene_.statistics().instancedTriangles;
+        addShape(std::move(triangle), transform);
+    } else
+        warn(node["vertices"], "triangle has zero area and is left out");
+}
+
+void SceneLoader::loadMeshObject(const Node& node, const std::optional<Transform>& transform) {
+    checkKeys(node, "a mesh", {"type", "file", "material", "transform"});
+    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", "a mesh"));
+    scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
+    // Without "material", the model's own materials (from its .mtl) are used.
+    const Material* material = node.has("material") ? materialOf(node) : nullptr;
+    scene_.addShape(
+        std::make_unique<Instance>(std::move(mesh), transform.value_or(Transform()), material));
 }
 
 void SceneLoader::addShape(std::unique_ptr<Shape> shape,
@@ -444,48 +474,55 @@ Transform SceneLoader::readTransform(const Node& node) const {
 
 void SceneLoader::loadLight(const Node& node) {
     requireObject(node, "a light");
-    const std::string type = readString(require(node, "type", "a light"));
-    if (type == "point") {
-        checkKeys(node, "a point light", {"type", "position", "intensity", "falloff"});
-        const Vec3 position = readVec3(require(node, "position", "a point light"));
-        const Color intensity = readColor(require(node, "intensity", "a point light"));
-        scene_.addLight(
-            std::make_unique<PointLight>(position, intensity, readInverseSquareFalloff(node)));
-    } else if (type == "directional") {
-        checkKeys(node, "a directional light", {"type", "direction", "irradiance"});
-        const Vec3 direction = readDirection(require(node, "direction", "a directional light"));
-        const Color irradiance = readColor(require(node, "irradiance", "a directional light"));
-        scene_.addLight(std::make_unique<DirectionalLight>(direction, irradiance));
-    } else if (type == "spot") {
-        loadSpotLight(node);
-    } else if (type == "quad") {
-        checkKeys(node, "a quad light",
-                  {"type", "corner", "edge1", "edge2", "radiance", "samples"});
-        const Vec3 corner = readVec3(require(node, "corner", "a quad light"));
-        const Vec3 edge1 = readVec3(require(node, "edge1", "a quad light"));
-        const Vec3 edge2 = readVec3(require(node, "edge2", "a quad light"));
-        const auto area = static_cast<float>(length(cross(Vec3d(edge1), Vec3d(edge2))));
-        if (!(area > 0) || !std::isfinite(area))
-            fail(node["edge2"],
-                 "a quad light's \"edge1\" and \"edge2\" must be non-zero and not parallel "
-                 "(the quad has no area)");
-        const Color radiance = readColor(require(node, "radiance", "a quad light"));
-        auto surface = std::make_unique<Quad>(corner, edge1, edge2, emitterOf(radiance));
-        auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
-        addAreaLight(node, std::move(surface), std::move(light));
-    } else if (type == "sphere") {
-        checkKeys(node, "a sphere light", {"type", "center", "radius", "radiance", "samples"});
-        const Vec3 center = readVec3(require(node, "center", "a sphere light"));
-        const float radius = readNumberAtLeast(require(node, "radius", "a sphere light"), 0, false);
-        const Color radiance = readColor(require(node, "radiance", "a sphere light"));
-        auto surface = std::make_unique<Sphere>(center, radius, emitterOf(radiance));
-        auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
-        addAreaLight(node, std::move(surface), std::move(light));
-    } else {
-        fail(node["type"],
-             "unknown light type " + inQuotes(type) +
-                 didYouMean(type, {"point", "directional", "spot", "quad", "sphere"}));
-    }
+    const Node typeNode = require(node, "type", "a light");
+    const std::string type = readString(typeNode);
+    const LightType* entry = lightTypes().find(type);
+    if (!entry)
+        fail(typeNode, "unknown light type " + inQuotes(type) +
+                           didYouMean(type, lightTypes().names()) + "; expected " +
+                           lightTypes().quotedNames());
+    (this->*entry->load)(node);
+}
+
+void SceneLoader::loadPointLight(const Node& node) {
+    checkKeys(node, "a point light", {"type", "position", "intensity", "falloff"});
+    const Vec3 position = readVec3(require(node, "position", "a point light"));
+    const Color intensity = readColor(require(node, "intensity", "a point light"));
+    scene_.addLight(
+        std::make_unique<PointLight>(position, intensity, readInverseSquareFalloff(node)));
+}
+
+void SceneLoader::loadDirectionalLight(const Node& node) {
+    checkKeys(node, "a directional light", {"type", "direction", "irradiance"});
+    const Vec3 direction = readDirection(require(node, "direction", "a directional light"));
+    const Color irradiance = readColor(require(node, "irradiance", "a directional light"));
+    scene_.addLight(std::make_unique<DirectionalLight>(direction, irradiance));
+}
+
+void SceneLoader::loadQuadLight(const Node& node) {
+    checkKeys(node, "a quad light", {"type", "corner", "edge1", "edge2", "radiance", "samples"});
+    const Vec3 corner = readVec3(require(node, "corner", "a quad light"));
+    const Vec3 edge1 = readVec3(require(node, "edge1", "a quad light"));
+    const Vec3 edge2 = readVec3(require(node, "edge2", "a quad light"));
+    const auto area = static_cast<float>(length(cross(Vec3d(edge1), Vec3d(edge2))));
+    if (!(area > 0) || !std::isfinite(area))
+        fail(node["edge2"],
+             "a quad light's \"edge1\" and \"edge2\" must be non-zero and not parallel "
+             "(the quad has no area)");
+    const Color radiance = readColor(require(node, "radiance", "a quad light"));
+    auto surface = std::make_unique<Quad>(corner, edge1, edge2, emitterOf(radiance));
+    auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
+    addAreaLight(node, std::move(surface), std::move(light));
+}
+
+void SceneLoader::loadSphereLight(const Node& node) {
+    checkKeys(node, "a sphere light", {"type", "center", "radius", "radiance", "samples"});
+    const Vec3 center = readVec3(require(node, "center", "a sphere light"));
+    const float radius = readNumberAtLeast(require(node, "radius", "a sphere light"), 0, false);
+    const Color radiance = readColor(require(node, "radiance", "a sphere light"));
+    auto surface = std::make_unique<Sphere>(center, radius, emitterOf(radiance));
+    auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
+    addAreaLight(node, std::move(surface), std::move(light));
 }
 
 bool SceneLoader::readInverseSquareFalloff(const Node& light) const {

@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "io/JsonDocument.h"
 #include "math/Transform.h"
 #include "scene/Scene.h"
+#include "util/Registry.h"
 
 namespace lancer {
 
@@ -49,12 +51,32 @@ private:
     void loadMaterials(const Node& node);
     std::unique_ptr<Material> loadMaterial(const Node& node);
     std::shared_ptr<const Texture> loadTexture(const Node& node);
+    // A type of the "objects" or "lights" array, and the member reading its keys.
+    struct ObjectType {
+        const char* name;
+        void (SceneLoader::*load)(const Node& node, const std::optional<Transform>& transform);
+    };
+    struct LightType {
+        const char* name;
+        void (SceneLoader::*load)(const Node& node);
+    };
+    static const Registry<ObjectType>& objectTypes();
+    static const Registry<LightType>& lightTypes();
+
     void loadObject(const Node& node);
+    void loadSphere(const Node& node, const std::optional<Transform>& transform);
+    void loadPlane(const Node& node, const std::optional<Transform>& transform);
+    void loadTriangle(const Node& node, const std::optional<Transform>& transform);
+    void loadMeshObject(const Node& node, const std::optional<Transform>& transform);
     void addShape(std::unique_ptr<Shape> shape, const std::optional<Transform>& transform);
     std::shared_ptr<const Mesh> loadMesh(const Node& file);
     std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
     Transform readTransform(const Node& node) const;
     void loadLight(const Node& node);
+    void loadPointLight(const Node& node);
+    void loadDirectionalLight(const Node& node);
+    void loadQuadLight(const Node& node);
+    void loadSphereLight(const Node& node);
     void loadSpotLight(const Node& node);
     bool readInverseSquareFalloff(const Node& light) const;
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
