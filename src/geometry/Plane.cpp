@@ -21,6 +21,11 @@ Plane::Plane(const Vec3& point, const Vec3& normal, const Material* material)
     dpdv_[normalAxis] = -normal_[vAxis_] / normal_[normalAxis];
 }
 
+std::unique_ptr<Shape> Plane::create(const Parameters& parameters, const Material* material) {
+    return std::make_unique<Plane>(parameters.point("point"), parameters.direction("normal"),
+                                   material);
+}
+
 Bounds3 Plane::bounds() const {
     return {Vec3(-kInfinity), Vec3(kInfinity)};
 }

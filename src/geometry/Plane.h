@@ -1,6 +1,11 @@
 #pragma once
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "geometry/Shape.h"
+#include "util/Parameters.h"
 
 namespace lancer {
 
@@ -8,6 +13,9 @@ namespace lancer {
 class Plane final : public Shape {
 public:
     Plane(const Vec3& point, const Vec3& normal, const Material* material);
+    // The scene file's "plane": point, normal (non-zero).
+    static std::vector<std::string> keys() { return {"point", "normal"}; }
+    static std::unique_ptr<Shape> create(const Parameters& parameters, const Material* material);
 
     std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override;

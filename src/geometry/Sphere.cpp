@@ -9,6 +9,11 @@ namespace lancer {
 Sphere::Sphere(const Vec3& center, float radius, const Material* material)
     : Shape(material), center_(center), radius_(radius) {}
 
+std::unique_ptr<Shape> Sphere::create(const Parameters& parameters, const Material* material) {
+    return std::make_unique<Sphere>(parameters.point("center"),
+                                    parameters.numberAbove("radius", 0, false), material);
+}
+
 Bounds3 Sphere::bounds() const {
     return {center_ - Vec3(radius_), center_ + Vec3(radius_)};
 }

@@ -1,6 +1,11 @@
 #pragma once
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "geometry/Shape.h"
+#include "util/Parameters.h"
 
 namespace lancer {
 
@@ -10,6 +15,9 @@ namespace lancer {
 class Sphere final : public Shape {
 public:
     Sphere(const Vec3& center, float radius, const Material* material);
+    // The scene file's "sphere": center, radius (> 0).
+    static std::vector<std::string> keys() { return {"center", "radius"}; }
+    static std::unique_ptr<Shape> create(const Parameters& parameters, const Material* material);
 
     std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override;

@@ -23,6 +23,7 @@
 #include "materials/ImageTexture.h"
 #include "render/Filter.h"
 #include "util/DidYouMean.h"
+#include "util/Parameters.h"
 
 namespace lancer {
 
@@ -47,10 +48,10 @@ std::string describe(const nlohmann::json& v) {
 // The scene file's object and light types: one registration line each.
 const Registry<SceneLoader::ObjectType>& SceneLoader::objectTypes() {
     static const Registry<ObjectType> types{
-        {"sphere", &SceneLoader::loadSphere},
-        {"plane", &SceneLoader::loadPlane},
-        {"triangle", &SceneLoader::loadTriangle},
-        {"mesh", &SceneLoader::loadMeshObject},
+        {"sphere", "a sphere", &SceneLoader::loadShape<Sphere>},
+        {"plane", "a plane", &SceneLoader::loadShape<Plane>},
+        {"triangle", "a triangle", &SceneLoader::loadTriangle},
+        {"mesh", "a mesh", &SceneLoader::loadMeshObject},
     };
     return types;
 }
@@ -323,27 +324,58 @@ void SceneLoader::loadObject(const Node& node) {
                            objectTypes().quotedNames());
     std::optional<Transform> transform;
     if (node.has("transform")) transform = readTransform(node["transform"]);
-    (this->*entry->load)(node, transform);
+    (this->*entry->load)(node, entry->what, transform);
 }
 
-void SceneLoader::loadSphere(const Node& node, const std::optional<Transform>& transform) {
-    checkKeys(node, "a sphere", {"type", "center", "radius", "material", "transform"});
-    const Vec3 center = readVec3(require(node, "center", "a sphere"));
-    const float radius = readNumberAtLeast(require(node, "radius", "a sphere"), 0, false);
-    addShape(std::make_unique<Sphere>(center, radius, materialOf(node)), transform);
+class SceneLoader::ObjectParameters final : public Parameters {
+public:
+    ObjectParameters(const SceneLoader& loader, const Node& node, const char* what)
+        : loader_(loader), node_(node), what_(what) {}
+
+    bool has(const std::string& key) const override { return node_.has(key); }
+    float number(const std::string& key) const override {
+        return loader_.readNumber(loader_.require(node_, key, what_));
+    }
+    float numberAbove(const std::string& key, float minimum, bool inclusive) const override {
+        return loader_.readNumberAtLeast(loader_.require(node_, key, what_), minimum, inclusive);
+    }
+    Vec3 point(const std::string& key) const override {
+        return loader_.readVec3(loader_.require(node_, key, what_));
+    }
+    Vec3 direction(const std::string& key) const override {
+        return loader_.readDirection(loader_.require(node_, key, what_));
+    }
+    Color color(const std::string& key) const override {
+        return loader_.readColor(loader_.require(node_, key, what_));
+    }
+    bool flag(const std::string& key) const override {
+        return loader_.readFlag(loader_.require(node_, key, what_));
+    }
+    [[noreturn]] void fail(const std::string& key, const std::string& message) const override {
+        loader_.fail(node_.has(key) ? node_[key] : node_, message);
+    }
+
+private:
+    const SceneLoader& loader_;
+    const Node& node_;
+    std::string what_;
+};
+
+template <typename ShapeType>
+void SceneLoader::loadShape(const Node& node, const char* what,
+                            const std::optional<Transform>& transform) {
+    std::vector<std::string> keys{"type", "material", "transform"};
+    for (std::string& key : ShapeType::keys())
+        keys.push_back(std::move(key));
+    checkKeys(node, what, keys);
+    addShape(ShapeType::create(ObjectParameters(*this, node, what), materialOf(node)), transform);
 }
 
-void SceneLoader::loadPlane(const Node& node, const std::optional<Transform>& transform) {
-    checkKeys(node, "a plane", {"type", "point", "normal", "material", "transform"});
-    const Vec3 point = readVec3(require(node, "point", "a plane"));
-    const Vec3 normal = readDirection(require(node, "normal", "a plane"));
-    addShape(std::make_unique<Plane>(point, normal, materialOf(node)), transform);
-}
-
-void SceneLoader::loadTriangle(const Node& node, const std::optional<Transform>& transform) {
-    checkKeys(node, "a triangle", {"type", "vertices", "normals", "uvs", "material", "transform"});
+void SceneLoader::loadTriangle(const Node& node, const char* what,
+                               const std::optional<Transform>& transform) {
+    checkKeys(node, what, {"type", "vertices", "normals", "uvs", "material", "transform"});
     const auto readThree = [&](const std::string& key, auto read) {
-        const Node list = require(node, key, "a triangle");
+        const Node list = require(node, key, what);
         if (!list.value.is_array() || list.value.size() != 3)
             fail(list, inQuotes(key) + " must be an array of 3, got " + describe(list.value));
         using T = decltype(read(list));
@@ -367,9 +399,10 @@ void SceneLoader::loadTriangle(const Node& node, const std::optional<Transform>&
         warn(node["vertices"], "triangle has zero area and is left out");
 }
 
-void SceneLoader::loadMeshObject(const Node& node, const std::optional<Transform>& transform) {
-    checkKeys(node, "a mesh", {"type", "file", "material", "transform"});
-    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", "a mesh"));
+void SceneLoader::loadMeshObject(const Node& node, const char* what,
+                                 const std::optional<Transform>& transform) {
+    checkKeys(node, what, {"type", "file", "material", "transform"});
+    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what));
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
     // Without "material", the model's own materials (from its .mtl) are used.
     const Material* material = node.has("material") ? materialOf(node) : nullptr;
@@ -628,6 +661,12 @@ SceneLoader::Node SceneLoader::require(const Node& object, const std::string& ke
                                        const std::string& what) const {
     if (!object.has(key)) fail(object, what + " needs " + inQuotes(key));
     return object[key];
+}
+
+bool SceneLoader::readFlag(const Node& node) const {
+    if (!node.value.is_boolean())
+        fail(node, node.name + " must be true or false, got " + describe(node.value));
+    return node.value.get<bool>();
 }
 
 float SceneLoader::readNumber(const Node& node) const {

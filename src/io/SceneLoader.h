@@ -54,8 +54,12 @@ private:
     // A type of the "objects" or "lights" array, and the member reading its keys.
     struct ObjectType {
         const char* name;
-        void (SceneLoader::*load)(const Node& node, const std::optional<Transform>& transform);
+        const char* what;  // "a sphere": the object, in messages
+        void (SceneLoader::*load)(const Node& node, const char* what,
+                                  const std::optional<Transform>& transform);
     };
+    // An object's keys, read for the class it makes.
+    class ObjectParameters;
     struct LightType {
         const char* name;
         void (SceneLoader::*load)(const Node& node);
@@ -64,10 +68,14 @@ private:
     static const Registry<LightType>& lightTypes();
 
     void loadObject(const Node& node);
-    void loadSphere(const Node& node, const std::optional<Transform>& transform);
-    void loadPlane(const Node& node, const std::optional<Transform>& transform);
-    void loadTriangle(const Node& node, const std::optional<Transform>& transform);
-    void loadMeshObject(const Node& node, const std::optional<Transform>& transform);
+    // A shape that reads its own keys: ShapeType::keys() and ShapeType::create(parameters,
+    // material).
+    template <typename ShapeType>
+    void loadShape(const Node& node, const char* what, const std::optional<Transform>& transform);
+    void loadTriangle(const Node& node, const char* what,
+                      const std::optional<Transform>& transform);
+    void loadMeshObject(const Node& node, const char* what,
+                        const std::optional<Transform>& transform);
     void addShape(std::unique_ptr<Shape> shape, const std::optional<Transform>& transform);
     std::shared_ptr<const Mesh> loadMesh(const Node& file);
     std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
@@ -95,6 +103,7 @@ private:
     void requireArray(const Node& node, const std::string& what) const;
     Node require(const Node& object, const std::string& key, const std::string& what) const;
 
+    bool readFlag(const Node& node) const;
     float readNumber(const Node& node) const;
     float readNumberAtLeast(const Node& node, float minimum, bool inclusive) const;
     int readInt(const Node& node, int minimum) const;
