@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "accel/Mesh.h"
+#include "geometry/Disk.h"
 #include "geometry/Instance.h"
 #include "geometry/Plane.h"
 #include "geometry/Quad.h"
@@ -52,6 +53,7 @@ const Registry<SceneLoader::ObjectType>& SceneLoader::objectTypes() {
         {"plane", "a plane", &SceneLoader::loadShape<Plane>},
         {"triangle", "a triangle", &SceneLoader::loadTriangle},
         {"mesh", "a mesh", &SceneLoader::loadMeshObject},
+        {"disk", "a disk", &SceneLoader::loadShape<Disk>},
     };
     return types;
 }

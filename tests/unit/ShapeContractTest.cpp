@@ -12,6 +12,7 @@
 
 #include "TestSupport.h"
 #include "accel/Mesh.h"
+#include "geometry/Disk.h"
 #include "geometry/Instance.h"
 #include "geometry/Plane.h"
 #include "geometry/Quad.h"
@@ -69,6 +70,17 @@ std::vector<ShapeCase> shapeCases() {
          },
          true},
         {"Mesh", makeMesh, true},
+        {"Disk",
+         [] {
+             return std::make_unique<Disk>(Vec3(0.1f, 0.2f, -0.3f), Vec3(0.3f, 1, 0.2f), 1.2f, 0,
+                                           &kMaterial);
+         },
+         true},
+        {"Annulus",
+         [] {
+             return std::make_unique<Disk>(Vec3(0), Vec3(-0.5f, 0.2f, 1), 1, 0.4f, &kMaterial);
+         },
+         true},
         {"InstancedSphere",
          [=] {
              return std::make_unique<Instance>(std::make_shared<Sphere>(Vec3(0), 0.7f, nullptr),

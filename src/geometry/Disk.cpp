@@ -1,0 +1,125 @@
+#include "geometry/Disk.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace lancer {
+
+Disk::Disk(const Vec3& center, const Vec3& normal, float radius, float innerRadius,
+           const Material* material)
+    : Shape(material),
+      center_(center),
+      normal_(normalize(normal)),
+      radius_(radius),
+      innerRadius_(innerRadius) {
+    coordinateSystem(normal_, tangent_, bitangent_);
+    if (dot(cross(tangent_, bitangent_), normal_) < 0) std::swap(tangent_, bitangent_);
+}
+
+std::unique_ptr<Shape> Disk::create(const Parameters& parameters, const Material* material) {
+    const float radius = parameters.numberAbove("radius", 0, false);
+    float innerRadius = 0;
+    if (parameters.has("inner_radius")) {
+        innerRadius = parameters.numberAbove("inner_radius", 0, true);
+        if (!(innerRadius < radius))
+            parameters.fail("inner_radius", "\"inner_radius\" must be less than \"radius\"");
+    }
+    return std::make_unique<Disk>(parameters.point("center"), parameters.direction("normal"),
+                                  radius, innerRadius, material);
+}
+
+Bounds3 Disk::bounds() const {
+    // Along each axis the rim reaches R sqrt(1 - n_axis^2) from the centre.
+    Vec3 reach;
+    for (int axis = 0; axis < 3; ++axis)
+        reach[axis] = radius_ * std::sqrt(std::max(0.0f, 1 - normal_[axis] * normal_[axis]));
+    const Bounds3 box(center_ - reach, center_ + reach);
+    // The intersection works in double: the surface it finds may lie a few ulps outside.
+    const Vec3 slack = gamma(3) * max(abs(box.min), abs(box.max)) + gamma(3) * reach;
+    return {box.min - slack, box.max + slack};
+}
+
+std::optional<Hit> Disk::intersect(const Ray& ray, float tMax) const {
+    // In double precision, as the plane: the sign of t must be exact for a ray spawned just off
+    // the surface.
+    const Vec3d n(normal_);
+    const Vec3d d(ray.direction);
+    const double denominator = dot(n, d);
+    if (denominator == 0) return std::nullopt;  // parallel
+    const Vec3d o(ray.origin);
+    const Vec3d c(center_);
+    const double t = dot(n, c - o) / denominator;
+    if (!(t > 0 && t < tMax)) return std::nullopt;
+    Vec3d q = o + t * d - c;
+    q -= dot(n, q) * n;  // back onto the plane
+    const double r2 = dot(q, q);
+    const double R = radius_, Ri = innerRadius_;
+    if (r2 > R * R || r2 < Ri * Ri) return std::nullopt;
+
+    const double r = std::sqrt(r2);
+    const double x = dot(q, Vec3d(tangent_)), y = dot(q, Vec3d(bitangent_));
+    double phi = std::atan2(y, x);
+    if (phi < 0) phi += 2 * kPi;
+    const Vec3 p(c + q);
+    Hit hit;
+    hit.t = static_cast<float>(t);
+    hit.p = p;
+    hit.pError = gamma(2) * abs(p);
+    hit.ng = normal_;
+    hit.ns = normal_;
+    hit.uv = {static_cast<float>(phi / (2 * kPi)), static_cast<float>((R - r) / (R - Ri))};
+    // p = c + r (cos phi t + sin phi b), phi = 2 pi u, r = R - (R - Ri) v.
+    const auto cosPhi = static_cast<float>(std::cos(phi)),
+               sinPhi = static_cast<float>(std::sin(phi));
+    const Vec3 radial = cosPhi * tangent_ + sinPhi * bitangent_;
+    const Vec3 around = -sinPhi * tangent_ + cosPhi * bitangent_;
+    hit.dpdu = (2 * kPi * static_cast<float>(r)) * around;
+    hit.dpdv = -(radius_ - innerRadius_) * radial;
+    hit.shape = this;
+    hit.primitive = 0;
+    hit.material = material();
+    return hit;
+}
+
+float Disk::area(std::uint32_t) const {
+    return kPi * (radius_ * radius_ - innerRadius_ * innerRadius_);
+}
+
+Vec3 Disk::pointAt(float r, float phi) const {
+    return center_ + r * (std::cos(phi) * tangent_ + std::sin(phi) * bitangent_);
+}
+
+std::optional<ShapeSample> Disk::sample(std::uint32_t primitive, const Vec2& u) const {
+    // r^2 uniform between Ri^2 and R^2: uniform by area.
+    const float r2 =
+        innerRadius_ * innerRadius_ + u.x * (radius_ * radius_ - innerRadius_ * innerRadius_);
+    return ShapeSample{pointAt(std::sqrt(r2), 2 * kPi * u.y), normal_, 1 / area(primitive)};
+}
+
+Tessellation Disk::tessellate(const TessellationRequest& request) const {
+    const auto piecesFor = [&](float length) {
+        return std::clamp(static_cast<int>(std::ceil(length / request.patchSize)), 1, 4096);
+    };
+    const int segments = std::max(16, piecesFor(2 * kPi * radius_));
+    const int rings = piecesFor(radius_ - innerRadius_);
+    const auto at = [&](int ring, int segment) {
+        const float r = radius_ - (radius_ - innerRadius_) * static_cast<float>(ring) /
+                                      static_cast<float>(rings);
+        return pointAt(
+            r, 2 * kPi * static_cast<float>(segment % segments) / static_cast<float>(segments));
+    };
+    Tessellation tessellation;
+    for (int ring = 0; ring < rings; ++ring)
+        for (int segment = 0; segment < segments; ++segment) {
+            // Counter-clockwise about the normal: outer edge first, then inwards.
+            const Vec3 o0 = at(ring, segment), o1 = at(ring, segment + 1);
+            const Vec3 i0 = at(ring + 1, segment), i1 = at(ring + 1, segment + 1);
+            tessellation.facets.push_back({{o0, o1, i1}, 0});
+            // The innermost ring of a full disk closes on the centre: one triangle.
+            if (ring + 1 < rings || innerRadius_ > 0)
+                tessellation.facets.push_back({{o0, i1, i0}, 0});
+        }
+    return tessellation;
+}
+
+}  // namespace lancer
