@@ -129,9 +129,9 @@ inline Bvh::RayBoxSetup::RayBoxSetup(const Ray& ray) {
     }
 }
 
-// The slab test of Bounds3::intersectP, unrolled on the node's floats with the entry corner chosen
-// per axis up front, so that each axis costs two subtractions, two products and no swap. tMax is
-// widened like the far distances: the entry distance, rounded up, may pass a primitive's t, rounded
+// The slab test (pbrt 6.8.2), unrolled on the node's floats with the entry corner chosen per axis
+// up front, so that each axis costs two subtractions, two products and no swap. tMax is widened
+// like the far distances: the entry distance, rounded up, may pass a primitive's t, rounded
 // down, by an ulp or two, and a box around a primitive hit just before tMax must still be entered.
 inline bool Bvh::RayBoxSetup::hits(const BvhNode& node, float tMax) const {
     float t0 = 0, t1 = tMax * kSlabWidening;
