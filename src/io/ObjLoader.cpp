@@ -1,9 +1,10 @@
-// OBJ models are parsed by tinyobjloader; faces are triangulated and MTL materials mapped here.
+// OBJ models are parsed by tinyobjloader; faces are triangulated (by PolygonTriangulator) and MTL
+// materials mapped here.
 //
 // Triangulation: tinyobjloader 2.0.0rc10 splits a quad along its shorter diagonal and clips the
 // ears of larger polygons with a wrong convexity test, so its triangles of a concave face overlap
 // and spill outside it (the concave 66-gon of assimp's concave_polygon.obj becomes 44 triangles
-// covering 7 times its area). So faces are read whole and split here by ear clipping. tinyobjloader
+// covering 7 times its area). So faces are read whole and split by ear clipping. tinyobjloader
 // stores a face's vertex count in one byte, though: a file with a face of more than 255 vertices is
 // read again with tinyobjloader's own triangulation, and a warning.
 //
@@ -60,6 +61,7 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/PolygonTriangulator.h"
 #include "materials/ConstantTexture.h"
 #include "materials/Material.h"
 #include "math/Float.h"
@@ -263,88 +265,6 @@ void reportMaterialProblems(const ObjContents& obj, const ParserFindings& findin
 }
 
 // ---------------------------------------------------------------------------------------------
-// Triangulation
-
-struct Point2 {
-    double x = 0, y = 0;
-    bool operator==(const Point2&) const = default;
-};
-
-// Twice the signed area of the triangle abc: positive when it turns counter-clockwise.
-double orientation(const Point2& a, const Point2& b, const Point2& c) {
-    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
-// Inside or on the border of the counter-clockwise triangle abc.
-bool inTriangle(const Point2& a, const Point2& b, const Point2& c, const Point2& p) {
-    return orientation(a, b, p) >= 0 && orientation(b, c, p) >= 0 && orientation(c, a, p) >= 0;
-}
-
-// The corners of a polygon in the plane it (nearly) lies in, turning counter-clockwise: projected
-// along the largest component of its Newell normal.
-std::vector<Point2> projectPolygon(const std::vector<Vec3>& corners) {
-    Vec3d normal;
-    for (std::size_t i = 0; i < corners.size(); ++i)
-        normal += cross(Vec3d(corners[i]), Vec3d(corners[(i + 1) % corners.size()]));
-    const int axis = maxDimension(normal);
-    const double flip = normal[axis] < 0 ? -1 : 1;
-    std::vector<Point2> points;
-    points.reserve(corners.size());
-    for (const Vec3& c : corners)
-        points.push_back({double(c[(axis + 1) % 3]), flip * double(c[(axis + 2) % 3])});
-    return points;
-}
-
-using CornerTriple = std::array<std::size_t, 3>;
-
-// Splits a polygon, convex or not, into triangles by ear clipping; the triangles keep the
-// polygon's winding. Holes joined to the outline by a two-way bridge edge (as some exporters
-// write them) work: a corner's duplicate does not block an ear. A self-intersecting or degenerate
-// polygon, which has no proper triangulation, still gives n - 2 triangles.
-std::vector<CornerTriple> triangulate(const std::vector<Vec3>& corners) {
-    const std::size_t n = corners.size();
-    if (n == 3) return {{0, 1, 2}};
-    const std::vector<Point2> p = projectPolygon(corners);
-    std::vector<std::size_t> prev(n), next(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        prev[i] = (i + n - 1) % n;
-        next[i] = (i + 1) % n;
-    }
-    // The corner b between a and c is an ear when it is convex and no reflex corner lies in abc
-    // (a convex corner inside abc would come with a reflex one).
-    const auto isEar = [&](std::size_t a, std::size_t b, std::size_t c) {
-        if (orientation(p[a], p[b], p[c]) <= 0) return false;
-        for (std::size_t i = next[c]; i != a; i = next[i]) {
-            if (p[i] == p[a] || p[i] == p[b] || p[i] == p[c]) continue;
-            if (inTriangle(p[a], p[b], p[c], p[i]) &&
-                orientation(p[prev[i]], p[i], p[next[i]]) <= 0)
-                return false;
-        }
-        return true;
-    };
-    std::vector<CornerTriple> triangles;
-    triangles.reserve(n - 2);
-    std::size_t remaining = n, corner = 0, failures = 0;
-    while (remaining > 3) {
-        const std::size_t a = prev[corner], c = next[corner];
-        // After a whole round without an ear the polygon is not simple: clip anyway, so that
-        // the loop ends.
-        if (failures >= remaining || isEar(a, corner, c)) {
-            triangles.push_back({a, corner, c});
-            next[a] = c;
-            prev[c] = a;
-            --remaining;
-            failures = 0;
-        } else {
-            ++failures;
-        }
-        corner = c;
-    }
-    triangles.push_back({prev[corner], corner, next[corner]});
-    return triangles;
-}
-
-// ---------------------------------------------------------------------------------------------
 // Materials
 
 struct IlluminationModel {
@@ -472,6 +392,8 @@ private:
 // ---------------------------------------------------------------------------------------------
 // Building the mesh
 
+using CornerTriple = PolygonTriangulator::CornerTriple;
+
 // One vertex of the mesh: an OBJ position, normal and uv index triple (-1: none).
 struct CornerKey {
     int position = -1, normal = -1, uv = -1;
@@ -523,7 +445,7 @@ public:
         }
         facesWithBadNormals_ += badNormal;
         facesWithBadUvs_ += badUv;
-        std::vector<CornerTriple> triangles = triangulate(facePositions_);
+        std::vector<CornerTriple> triangles = PolygonTriangulator::triangulate(facePositions_);
         std::erase_if(triangles, [&](const CornerTriple& t) {
             const Vec3& p0 = facePositions_[t[0]];
             const bool zeroArea =
