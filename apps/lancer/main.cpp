@@ -128,11 +128,6 @@ std::string describeRate(std::uint64_t rays, double seconds) {
 // closed).
 std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiositySolver& solver,
                                                   const Options& options, Viewer* viewer) {
-    // The solve runs on oneTBB's workers: no more of them than --threads allows.
-    std::optional<tbb::global_control> threadLimit;
-    if (options.threads > 0)
-        threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
-                            static_cast<std::size_t>(options.threads));
     RadiositySolution solution;
     if (options.loadRadiosity) {
         solution = RadiositySolution::load(*options.loadRadiosity);
@@ -164,6 +159,12 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
 }
 
 int run(const Options& options) {
+    // The mesh builds, the radiosity solve and the render all run on oneTBB's threads: no more
+    // of them at once than --threads allows (and as many, when it asks for more than the cores).
+    std::optional<tbb::global_control> threadLimit;
+    if (options.threads > 0)
+        threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
+                            static_cast<std::size_t>(options.threads));
     const fs::path output = options.output.empty()
                                 ? fs::path(options.scene).replace_extension(".png")
                                 : fs::path(options.output);

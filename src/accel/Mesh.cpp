@@ -1,9 +1,7 @@
 #include "accel/Mesh.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include "geometry/Triangle.h"
+#include "util/ParallelFor.h"
 
 namespace lancer {
 
@@ -11,18 +9,9 @@ namespace {
 
 constexpr std::size_t kGrainSize = 16 * 1024;
 
-// Runs body(i) for i in [0, count) on the TBB threads.
-template <typename Body>
-void parallelFor(std::size_t count, Body&& body) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, kGrainSize), [&](const auto& r) {
-        for (std::size_t i = r.begin(); i < r.end(); ++i)
-            body(i);
-    });
-}
-
 std::vector<Bounds3> triangleBounds(const TriangleMesh& mesh) {
     std::vector<Bounds3> bounds(mesh.triangleCount());
-    parallelFor(bounds.size(), [&](std::size_t i) {
+    parallelFor(bounds.size(), kGrainSize, [&](std::size_t i) {
         const std::uint32_t* v = &mesh.indices[3 * i];
         bounds[i] =
             merge(Bounds3(mesh.positions[v[0]], mesh.positions[v[1]]), mesh.positions[v[2]]);
@@ -34,7 +23,7 @@ std::vector<Bounds3> triangleBounds(const TriangleMesh& mesh) {
 void reorderTriangles(TriangleMesh& mesh, std::span<const std::uint32_t> order) {
     std::vector<std::uint32_t> indices(mesh.indices.size());
     std::vector<std::uint32_t> faceMaterials(mesh.faceMaterials.size());
-    parallelFor(order.size(), [&](std::size_t k) {
+    parallelFor(order.size(), kGrainSize, [&](std::size_t k) {
         for (std::size_t j = 0; j < 3; ++j)
             indices[3 * k + j] = mesh.indices[3 * std::size_t{order[k]} + j];
         faceMaterials[k] = mesh.faceMaterials[order[k]];
@@ -72,7 +61,7 @@ Mesh::Mesh(TriangleMesh triangles) : Shape(nullptr), triangles_(std::move(triang
         return leaves.back().firstPack;
     });
     packs_.resize(packsSoFar);  // zeros in the lanes left over
-    parallelFor(leaves.size(), [&](std::size_t i) {
+    parallelFor(leaves.size(), kGrainSize, [&](std::size_t i) {
         const Leaf& leaf = leaves[i];
         for (std::uint32_t k = 0; k < leaf.count; ++k) {
             TrianglePack& pack = packs_[leaf.firstPack + k / TrianglePack::kLanes];

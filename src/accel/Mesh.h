@@ -1,6 +1,6 @@
 #pragma once
 
-#include "accel/Bvh.h"
+#include "accel/WideBvh.h"
 #include "geometry/Shape.h"
 #include "geometry/Triangle.h"
 #include "geometry/TriangleMesh.h"

@@ -1,53 +1,18 @@
-// OBJ models are parsed by tinyobjloader; faces are triangulated and MTL materials mapped here.
+// OBJ models are parsed by tinyobjloader; faces are triangulated here (by PolygonTriangulator),
+// and MTL materials mapped by MtlMaterialConverter.
 //
 // Triangulation: tinyobjloader 2.0.0rc10 splits a quad along its shorter diagonal and clips the
 // ears of larger polygons with a wrong convexity test, so its triangles of a concave face overlap
 // and spill outside it (the concave 66-gon of assimp's concave_polygon.obj becomes 44 triangles
-// covering 7 times its area). So faces are read whole and split here by ear clipping. tinyobjloader
+// covering 7 times its area). So faces are read whole and split by ear clipping. tinyobjloader
 // stores a face's vertex count in one byte, though: a file with a face of more than 255 vertices is
 // read again with tinyobjloader's own triangulation, and a warning.
-//
-// MTL keys, mapped onto the scene format's material (a key a material leaves out takes the scene
-// format's default):
-//   Kd      diffuse colour (absent: 0.8)
-//   map_Kd  diffuse texture, through the caller's TextureLoader; it replaces Kd. A texture that
-//           cannot be loaded leaves Kd, with a warning. Texture options (-s, -o...) are ignored.
-//   Ka      ambient colour; absent or black: the diffuse colour or texture (the format's default)
-//   Ks      highlight colour, and the mirror reflection of the reflecting models below
-//   Ns      shininess (absent: 32)
-//   Ni      ior (absent: 1.5)
-//   d / Tr  dissolve d is the opacity (Tr = 1 - d; d wins when both are given). A surface with
-//           d < 1 gets transmission 1 - d with ior 1: see-through without bending light, as
-//           dissolve is. Glass models are clear whatever d says.
-//   Ke      emission; an emissive triangle is an ordinary triangle with an emissive material
-//   Tf and the other maps (map_Ka, map_Ks, bump...) are not used.
-//
-// illum (absent: 2)                              specular  reflection  transmission
-//   0  colour on, ambient off                    0         0           1 - d
-//      A constant colour that no light changes is an emitter: Kd is added to the emission and the
-//      diffuse and ambient colours are black (map_Kd is not shown, with a warning).
-//   1  colour and ambient on                     0         0           1 - d
-//   2  highlights on                             Ks        0           1 - d
-//   3  mirror (reflection, ray trace on)         Ks        Ks          1 - d
-//   4  glass, ray-traced reflection              Ks        Ks          1, ior Ni
-//   5  Fresnel mirror                            Ks        Ks          1 - d
-//      Our Fresnel term only splits refracting materials, and a metal mirror's reflectance hardly
-//      changes with the angle: a plain mirror of Ks is the closest.
-//   6  refraction, Fresnel off                   Ks        Ks          1, ior Ni
-//   7  refraction, Fresnel on                    Ks        0           1, ior Ni
-//      A clear dielectric: transmission splits itself into reflection kt F and refraction
-//      kt (1 - F), so Fresnel alone reflects. In 4 and 6 the mirror Ks is added on top of it.
-//   8  reflection, ray trace off                 as 3 (reflections are always traced)
-//   9  glass, ray trace off                      as 7
-//   10 casts shadows onto invisible surfaces     as 1
-//   Other values are used as 2, with a warning.
 
 #include "io/ObjLoader.h"
 
 #include <tiny_obj_loader.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -60,9 +25,10 @@
 #include <utility>
 #include <vector>
 
-#include "materials/ConstantTexture.h"
+#include "geometry/PolygonTriangulator.h"
+#include "io/MtlMaterialConverter.h"
+#include "io/ObjSupport.h"
 #include "materials/Material.h"
-#include "math/Float.h"
 #include "scene/InputError.h"
 
 namespace lancer {
@@ -70,14 +36,6 @@ namespace lancer {
 namespace fs = std::filesystem;
 
 namespace {
-
-void warn(std::vector<std::string>& warnings, const fs::path& file, const std::string& message) {
-    warnings.push_back(file.string() + ": warning: " + message);
-}
-
-std::string inQuotes(const std::string& s) {
-    return "\"" + s + "\"";
-}
 
 std::string quotedList(const std::vector<std::string>& names) {
     std::string list;
@@ -91,38 +49,8 @@ std::string countOf(std::size_t count, const std::string& noun) {
     return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
 }
 
-// A file named inside an OBJ or MTL file: relative to that file's folder, and written with
-// Windows separators as often as not.
-fs::path resolvePath(const fs::path& folder, std::string name) {
-    std::replace(name.begin(), name.end(), '\\', '/');
-    const fs::path path(name);
-    return (path.is_absolute() ? path : folder / path).lexically_normal();
-}
-
 // ---------------------------------------------------------------------------------------------
 // Reading the files
-
-// tinyobjloader gives a key that a material leaves out the same value that a file may write
-// (illum 0, Ns 1, Ni 1, Kd 0), but here absent keys take the scene format's defaults. So every
-// material starts with these impossible values, which the file's own lines then overwrite.
-constexpr const char* kAbsentKeys = "Kd -1 -1 -1\nNs -1\nNi -1\nillum -1\n";
-constexpr tinyobj::real_t kAbsent = -1;
-constexpr int kAbsentIllum = -1;
-
-bool startsMaterial(const std::string& line) {
-    const std::size_t start = line.find_first_not_of(" \t");
-    return start != std::string::npos && line.compare(start, 6, "newmtl") == 0 &&
-           start + 6 < line.size() && (line[start + 6] == ' ' || line[start + 6] == '\t');
-}
-
-std::string markAbsentKeys(std::istream& mtl) {
-    std::string marked, line;
-    while (std::getline(mtl, line)) {
-        marked += line + "\n";
-        if (startsMaterial(line)) marked += kAbsentKeys;
-    }
-    return marked;
-}
 
 // Opens the MTL files that `mtllib` lines name, relative to the OBJ's folder, and remembers the
 // file each material comes from (its texture paths are relative to it) and the files not found.
@@ -142,7 +70,7 @@ public:
                 missing_.push_back(path);
             return false;
         }
-        std::istringstream text(markAbsentKeys(file));
+        std::istringstream text(MtlMaterialConverter::markAbsentKeys(file));
         tinyobj::LoadMtl(materialIds, materials, &text, mtlWarnings, mtlErrors);
         files_.resize(materials->size(), path);
         return true;
@@ -263,214 +191,9 @@ void reportMaterialProblems(const ObjContents& obj, const ParserFindings& findin
 }
 
 // ---------------------------------------------------------------------------------------------
-// Triangulation
-
-struct Point2 {
-    double x = 0, y = 0;
-    bool operator==(const Point2&) const = default;
-};
-
-// Twice the signed area of the triangle abc: positive when it turns counter-clockwise.
-double orientation(const Point2& a, const Point2& b, const Point2& c) {
-    return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
-
-// Inside or on the border of the counter-clockwise triangle abc.
-bool inTriangle(const Point2& a, const Point2& b, const Point2& c, const Point2& p) {
-    return orientation(a, b, p) >= 0 && orientation(b, c, p) >= 0 && orientation(c, a, p) >= 0;
-}
-
-// The corners of a polygon in the plane it (nearly) lies in, turning counter-clockwise: projected
-// along the largest component of its Newell normal.
-std::vector<Point2> projectPolygon(const std::vector<Vec3>& corners) {
-    Vec3d normal;
-    for (std::size_t i = 0; i < corners.size(); ++i)
-        normal += cross(Vec3d(corners[i]), Vec3d(corners[(i + 1) % corners.size()]));
-    const int axis = maxDimension(normal);
-    const double flip = normal[axis] < 0 ? -1 : 1;
-    std::vector<Point2> points;
-    points.reserve(corners.size());
-    for (const Vec3& c : corners)
-        points.push_back({double(c[(axis + 1) % 3]), flip * double(c[(axis + 2) % 3])});
-    return points;
-}
-
-using CornerTriple = std::array<std::size_t, 3>;
-
-// Splits a polygon, convex or not, into triangles by ear clipping; the triangles keep the
-// polygon's winding. Holes joined to the outline by a two-way bridge edge (as some exporters
-// write them) work: a corner's duplicate does not block an ear. A self-intersecting or degenerate
-// polygon, which has no proper triangulation, still gives n - 2 triangles.
-std::vector<CornerTriple> triangulate(const std::vector<Vec3>& corners) {
-    const std::size_t n = corners.size();
-    if (n == 3) return {{0, 1, 2}};
-    const std::vector<Point2> p = projectPolygon(corners);
-    std::vector<std::size_t> prev(n), next(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        prev[i] = (i + n - 1) % n;
-        next[i] = (i + 1) % n;
-    }
-    // The corner b between a and c is an ear when it is convex and no reflex corner lies in abc
-    // (a convex corner inside abc would come with a reflex one).
-    const auto isEar = [&](std::size_t a, std::size_t b, std::size_t c) {
-        if (orientation(p[a], p[b], p[c]) <= 0) return false;
-        for (std::size_t i = next[c]; i != a; i = next[i]) {
-            if (p[i] == p[a] || p[i] == p[b] || p[i] == p[c]) continue;
-            if (inTriangle(p[a], p[b], p[c], p[i]) &&
-                orientation(p[prev[i]], p[i], p[next[i]]) <= 0)
-                return false;
-        }
-        return true;
-    };
-    std::vector<CornerTriple> triangles;
-    triangles.reserve(n - 2);
-    std::size_t remaining = n, corner = 0, failures = 0;
-    while (remaining > 3) {
-        const std::size_t a = prev[corner], c = next[corner];
-        // After a whole round without an ear the polygon is not simple: clip anyway, so that
-        // the loop ends.
-        if (failures >= remaining || isEar(a, corner, c)) {
-            triangles.push_back({a, corner, c});
-            next[a] = c;
-            prev[c] = a;
-            --remaining;
-            failures = 0;
-        } else {
-            ++failures;
-        }
-        corner = c;
-    }
-    triangles.push_back({prev[corner], corner, next[corner]});
-    return triangles;
-}
-
-// ---------------------------------------------------------------------------------------------
-// Materials
-
-struct IlluminationModel {
-    bool lit;         // false: a constant colour (illum 0)
-    bool highlights;  // Ks as Blinn-Phong highlights
-    bool mirror;      // Ks as mirror reflection
-    bool glass;       // clear, refracting with ior Ni
-};
-
-// Indexed by illum; see the table at the top of the file.
-constexpr std::array<IlluminationModel, 11> kIlluminationModels{{
-    {false, false, false, false},  // 0
-    {true, false, false, false},   // 1
-    {true, true, false, false},    // 2
-    {true, true, true, false},     // 3
-    {true, true, true, true},      // 4
-    {true, true, true, false},     // 5
-    {true, true, true, true},      // 6
-    {true, true, false, true},     // 7
-    {true, true, true, false},     // 8
-    {true, true, false, true},     // 9
-    {true, false, false, false},   // 10
-}};
-constexpr int kDefaultIllum = 2;
-constexpr float kDefaultDiffuse = 0.8f;  // the scene format's
-
-bool isGiven(const tinyobj::real_t* rgb) {
-    return rgb[0] != kAbsent;
-}
-
-// Negative and non-finite components are read as 0.
-Color colorOf(const tinyobj::real_t* rgb) {
-    const auto component = [](tinyobj::real_t v) { return std::isfinite(v) && v > 0 ? v : 0; };
-    return {component(rgb[0]), component(rgb[1]), component(rgb[2])};
-}
-
-// Turns MTL materials into ours, loading each texture once.
-class MaterialConverter {
-public:
-    MaterialConverter(const ObjLoader::TextureLoader& loadTexture,
-                      std::vector<std::string>& warnings)
-        : loadTexture_(loadTexture), warnings_(warnings) {}
-
-    std::shared_ptr<const Material> convert(const tinyobj::material_t& mtl,
-                                            const fs::path& mtlPath) {
-        const IlluminationModel& model = illuminationModel(mtl, mtlPath);
-        auto material = std::make_shared<Material>();
-        const Color kd = isGiven(mtl.diffuse) ? colorOf(mtl.diffuse) : Color(kDefaultDiffuse);
-        const Color ka = colorOf(mtl.ambient), ks = colorOf(mtl.specular);
-        material->emission = colorOf(mtl.emission);
-        if (model.lit) {
-            std::shared_ptr<const Texture> texture;
-            if (!mtl.diffuse_texname.empty()) texture = diffuseTexture(mtl, mtlPath);
-            material->diffuse = texture ? texture : std::make_shared<ConstantTexture>(kd);
-            material->ambient =
-                ka.isBlack() ? material->diffuse : std::make_shared<ConstantTexture>(ka);
-        } else {
-            material->emission += kd;
-            material->diffuse = material->ambient = std::make_shared<ConstantTexture>(Color(0));
-            if (!mtl.diffuse_texname.empty())
-                warn(warnings_, mtlPath,
-                     "material " + inQuotes(mtl.name) +
-                         " is illum 0, an unlit constant colour: it shows its Kd colour, not "
-                         "its map_Kd texture");
-        }
-        if (model.highlights) material->specular = ks;
-        if (model.mirror) material->reflection = ks;
-        if (mtl.shininess >= 0) material->shininess = mtl.shininess;
-        if (mtl.ior > 0) material->ior = mtl.ior;
-        const float opacity = std::isfinite(mtl.dissolve) ? clamp(mtl.dissolve, 0.0f, 1.0f) : 1;
-        if (model.glass) {
-            material->transmission = Color(1);
-        } else if (opacity < 1) {
-            material->transmission = Color(1 - opacity);
-            material->ior = 1;
-        }
-        return material;
-    }
-
-private:
-    const IlluminationModel& illuminationModel(const tinyobj::material_t& mtl,
-                                               const fs::path& mtlPath) {
-        if (mtl.illum == kAbsentIllum) return kIlluminationModels[kDefaultIllum];
-        if (mtl.illum >= 0 && mtl.illum < int(kIlluminationModels.size()))
-            return kIlluminationModels[std::size_t(mtl.illum)];
-        warn(warnings_, mtlPath,
-             "material " + inQuotes(mtl.name) + " has illum " + std::to_string(mtl.illum) +
-                 ", which is not an illumination model (0 to 10); illum " +
-                 std::to_string(kDefaultIllum) + " is used");
-        return kIlluminationModels[kDefaultIllum];
-    }
-
-    // Null when the texture cannot be loaded (with one warning per texture file).
-    std::shared_ptr<const Texture> diffuseTexture(const tinyobj::material_t& mtl,
-                                                  const fs::path& mtlPath) {
-        const fs::path path = findTexture(mtlPath.parent_path(), mtl.diffuse_texname);
-        const auto [cached, isNew] = textures_.try_emplace(path);
-        if (!isNew) return cached->second;
-        try {
-            cached->second = loadTexture_(path);
-        } catch (const InputError& error) {
-            warn(warnings_, mtlPath,
-                 "texture " + inQuotes(path.string()) + " (map_Kd of material " +
-                     inQuotes(mtl.name) + ") cannot be loaded; the Kd colour is used instead (" +
-                     error.message() + ")");
-        }
-        return cached->second;
-    }
-
-    // Exporters often write absolute paths of the author's machine: when the path leads nowhere,
-    // the file of that name next to the MTL is taken instead.
-    static fs::path findTexture(const fs::path& mtlFolder, const std::string& name) {
-        const fs::path path = resolvePath(mtlFolder, name);
-        const fs::path besideMtl = mtlFolder / path.filename();
-        std::error_code error;
-        if (!fs::exists(path, error) && fs::exists(besideMtl, error)) return besideMtl;
-        return path;
-    }
-
-    const ObjLoader::TextureLoader& loadTexture_;
-    std::vector<std::string>& warnings_;
-    std::map<fs::path, std::shared_ptr<const Texture>> textures_;
-};
-
-// ---------------------------------------------------------------------------------------------
 // Building the mesh
+
+using CornerTriple = PolygonTriangulator::CornerTriple;
 
 // One vertex of the mesh: an OBJ position, normal and uv index triple (-1: none).
 struct CornerKey {
@@ -523,7 +246,7 @@ public:
         }
         facesWithBadNormals_ += badNormal;
         facesWithBadUvs_ += badUv;
-        std::vector<CornerTriple> triangles = triangulate(facePositions_);
+        std::vector<CornerTriple> triangles = PolygonTriangulator::triangulate(facePositions_);
         std::erase_if(triangles, [&](const CornerTriple& t) {
             const Vec3& p0 = facePositions_[t[0]];
             const bool zeroArea =
@@ -629,7 +352,7 @@ private:
 
     const ObjContents& obj_;
     const std::size_t positionCount_, normalCount_, uvCount_;
-    MaterialConverter materials_;
+    MtlMaterialConverter materials_;
     std::shared_ptr<TriangleMesh> mesh_;
     std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertices_;
     std::map<int, std::uint32_t> slots_;  // OBJ material index (-1: the default) -> mesh's

@@ -1,7 +1,5 @@
 #pragma once
 
-#include <algorithm>
-
 #include "math/Float.h"
 #include "math/Ray.h"
 #include "math/Vec3.h"
@@ -38,23 +36,6 @@ struct Bounds3 {
                p.z <= max.z;
     }
     constexpr int maxExtentAxis() const { return maxDimension(diagonal()); }
-
-    // Slab test against a ray given with its reciprocal direction; the far distance is widened by
-    // 2 gamma(3) so that rounding never misses a box a ray just touches (pbrt 6.8.2).
-    bool intersectP(const Vec3& origin, const Vec3& invDirection, float tMax) const {
-        float t0 = 0, t1 = tMax;
-        for (int i = 0; i < 3; ++i) {
-            float tNear = (min[i] - origin[i]) * invDirection[i];
-            float tFar = (max[i] - origin[i]) * invDirection[i];
-            if (tNear > tFar) std::swap(tNear, tFar);
-            tFar *= 1 + 2 * gamma(3);
-            // Written so that NaN (0 * inf on a slab boundary) keeps the interval unchanged.
-            t0 = tNear > t0 ? tNear : t0;
-            t1 = tFar < t1 ? tFar : t1;
-            if (t0 > t1) return false;
-        }
-        return true;
-    }
 };
 
 constexpr Bounds3 merge(const Bounds3& a, const Bounds3& b) {

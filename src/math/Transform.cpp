@@ -115,10 +115,6 @@ Transform Transform::inverse() const {
     return {inverse_, m_};
 }
 
-bool Transform::isIdentity() const {
-    return m_ == kIdentity;
-}
-
 Vec3 Transform::applyPoint(const Vec3& p) const {
     Vec3 r;
     for (int i = 0; i < 3; ++i)

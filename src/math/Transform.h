@@ -27,7 +27,6 @@ public:
     // (a * b) applies b first, then a.
     Transform operator*(const Transform& b) const;
     Transform inverse() const;
-    bool isIdentity() const;
 
     Vec3 applyPoint(const Vec3& p) const;
     Vec3 applyVector(const Vec3& v) const;

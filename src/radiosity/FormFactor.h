@@ -27,16 +27,10 @@ public:
     static double pointToTriangle(const Vec3d& p, const Vec3d& n,
                                   const std::array<Vec3, 3>& triangle);
 
-    // F from the side `receiverSide` of the element to the side `shooterSide` of the patch,
-    // visibility included (per colour channel, through transmissive surfaces) from `rays` rays
-    // to points of the patch that derive from `seed`. rayCount grows by the rays traced.
-    Color elementToPatch(const Element& receiver, Side receiverSide, const Patch& shooter,
-                         Side shooterSide, int rays, std::uint64_t seed,
-                         std::uint64_t& rayCount) const {
-        return elementToTriangle(receiver, receiverSide, shooter.corners, shooter, shooterSide,
-                                 rays, seed, rayCount);
-    }
-    // The same to a triangle of the patch (one of its elements).
+    // F from the side `receiverSide` of the element to the side `shooterSide` of a triangle of the
+    // patch (one of its elements, or the patch's own corners), visibility included (per colour
+    // channel, through transmissive surfaces) from `rays` rays to points of the triangle that
+    // derive from `seed`. rayCount grows by the rays traced.
     Color elementToTriangle(const Element& receiver, Side receiverSide,
                             const std::array<Vec3, 3>& triangle, const Patch& shooter,
                             Side shooterSide, int rays, std::uint64_t seed,

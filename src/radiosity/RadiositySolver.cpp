@@ -1,8 +1,5 @@
 #include "radiosity/RadiositySolver.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-
 #include <atomic>
 #include <bit>
 #include <chrono>
@@ -14,6 +11,7 @@
 #include "radiosity/SurfaceProbe.h"
 #include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
+#include "util/ParallelFor.h"
 
 namespace lancer {
 
@@ -44,14 +42,15 @@ constexpr int kAreaLightSamples = 16;
 template <typename Body>
 std::uint64_t RadiositySolver::parallelFor(std::size_t count, const Body& body) const {
     std::atomic<std::uint64_t> rays{0};
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 16),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                          if (cancelled()) return;
-                          std::uint64_t local = 0;
-                          for (std::size_t i = range.begin(); i != range.end(); ++i)
-                              body(i, local);
-                          rays += local;
-                      });
+    parallelForChunks(count, 16, [&](std::size_t begin, std::size_t end) {
+        if (cancelled()) return;
+        // Counted per chunk and added once: one counter that every ray wrote to would be
+        // contended by all the threads.
+        std::uint64_t local = 0;
+        for (std::size_t i = begin; i != end; ++i)
+            body(i, local);
+        rays += local;
+    });
     return rays;
 }
 

@@ -1,5 +1,9 @@
 #include "render/Renderer.h"
 
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -41,17 +45,18 @@ std::vector<PixelWindow> cutIntoTiles(const PixelWindow& window, int size) {
     return tiles;
 }
 
-// Runs renderTile(tile, counters) for every tile on `threadCount` threads, each taking the next
-// tile until none is left; renderTile returns false when it stopped early (cancelled), which
-// stops its thread. Returns the counts of all the threads.
+// Runs renderTile(tile, counters) for every tile on as many oneTBB workers as the arena has
+// threads, each taking the next tile until none is left, so that tiles start in order whatever the
+// threads. renderTile returns false when it stopped early (cancelled), which stops its worker.
+// Returns the counts of all the workers.
 template <typename RenderTile>
-RenderCounters renderTilesInParallel(const std::vector<PixelWindow>& tiles, int threadCount,
+RenderCounters renderTilesInParallel(const std::vector<PixelWindow>& tiles, tbb::task_arena& arena,
                                      const RenderTile& renderTile) {
     std::atomic<std::size_t> nextTile{0};
     std::mutex totalMutex;
     RenderCounters total;
     const auto worker = [&] {
-        // Counted locally and added once: per-thread counters side by side in one array would
+        // Counted locally and added once: per-worker counters side by side in one array would
         // share a cache line that every ray writes to.
         RenderCounters counters;
         for (std::size_t t; (t = nextTile.fetch_add(1)) < tiles.size();)
@@ -59,12 +64,13 @@ RenderCounters renderTilesInParallel(const std::vector<PixelWindow>& tiles, int 
         std::lock_guard lock(totalMutex);
         total += counters;
     };
-    std::vector<std::thread> pool;
-    for (int i = 1; i < threadCount; ++i)
-        pool.emplace_back(worker);
-    worker();
-    for (auto& thread : pool)
-        thread.join();
+    // The calling thread works in the arena too. A worker that finds no thread free starts once
+    // another has finished, and then finds no tile left.
+    arena.execute([&] {
+        tbb::parallel_for(
+            0, tbb::this_task_arena::max_concurrency(), [&](int) { worker(); },
+            tbb::simple_partitioner());
+    });
     return total;
 }
 
@@ -82,6 +88,8 @@ RenderResult Renderer::render(const RenderOptions& options) const {
     result.threads = options.threads > 0
                          ? options.threads
                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    // No more threads at once than asked for, the calling thread among them.
+    tbb::task_arena arena(options.threads > 0 ? options.threads : tbb::task_arena::automatic);
 
     std::mutex reportMutex;
     int tilesDone = 0;
@@ -102,7 +110,7 @@ RenderResult Renderer::render(const RenderOptions& options) const {
         Image preview(settings.width, settings.height);
         for (const int blockSize : options.previewBlockSizes) {
             result.counters += renderTilesInParallel(
-                cutIntoTiles(window, kTileSize * blockSize), result.threads,
+                cutIntoTiles(window, kTileSize * blockSize), arena,
                 [&](const PixelWindow& tile, RenderCounters& counters) {
                     for (const PixelWindow& block : cutIntoTiles(tile, blockSize)) {
                         if (cancelled()) return false;
@@ -117,8 +125,8 @@ RenderResult Renderer::render(const RenderOptions& options) const {
         }
     }
 
-    result.counters += renderTilesInParallel(
-        tiles, result.threads, [&](const PixelWindow& tile, RenderCounters& counters) {
+    result.counters +=
+        renderTilesInParallel(tiles, arena, [&](const PixelWindow& tile, RenderCounters& counters) {
             // Pixels go to the film only once their tile is complete, so that an interrupted
             // render holds whole tiles.
             std::vector<Color> tilePixels(static_cast<std::size_t>(tile.width() * tile.height()));

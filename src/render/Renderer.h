@@ -57,7 +57,7 @@ struct RenderResult {
     int threads = 0;
 };
 
-// Renders a scene: the image is cut into tiles that a pool of threads takes one at a time. A
+// Renders a scene: the image is cut into tiles that oneTBB's threads take one at a time. A
 // pixel's value depends only on (seed, pixel), never on which thread rendered it or when, so the
 // image is the same bit for bit whatever the thread count.
 class Renderer {

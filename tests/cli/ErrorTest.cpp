@@ -192,7 +192,7 @@ const ErrorCase kErrorCases[] = {
      .replace = R"("type": "sphere")",
      .with = R"("type": @"box")",
      .mentions = {R"(unknown object type "box")",
-                  R"(expected "sphere", "plane", "triangle" or "mesh")"}},
+                  R"(expected "sphere", "plane", "triangle", "mesh" or "disk")"}},
     {.name = "UnknownLightTypeListsTheValidOnes",
      .replace = R"("type": "point")",
      .with = R"("type": @"area")",

@@ -54,8 +54,9 @@ double areaFormFactor(const Scene& scene, const RadiosityMesh& mesh,
             double F = 0;
             for (std::uint32_t s : shooters)
                 F += formFactor
-                         .elementToPatch(element, Side::Front, mesh.patches[s], Side::Front,
-                                         visibilityRays, hashValues(e, s), rays)
+                         .elementToTriangle(element, Side::Front, mesh.patches[s].corners,
+                                            mesh.patches[s], Side::Front, visibilityRays,
+                                            hashValues(e, s), rays)
                          .average();
             weighted += element.area * F;
             area += element.area;
