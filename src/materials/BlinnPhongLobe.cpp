@@ -22,7 +22,7 @@ float BlinnPhongLobe::reflectedDensity(const Vec3& wo, const Vec3& wi) const {
 
 Color BlinnPhongLobe::f(const Vec3& wo, const Vec3& wi) const {
     if (wo.z * wi.z <= 0) return Color(0);
-    return ks_ * (reflectedDensity(wo, wi) / std::max(std::abs(wo.z), std::abs(wi.z)));
+    return weight() * (reflectedDensity(wo, wi) / std::max(std::abs(wo.z), std::abs(wi.z)));
 }
 
 float BlinnPhongLobe::pdf(const Vec3& wo, const Vec3& wi) const {

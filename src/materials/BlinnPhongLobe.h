@@ -17,7 +17,7 @@ namespace lancer {
 // wo and wi.
 class BlinnPhongLobe final : public BsdfLobe {
 public:
-    BlinnPhongLobe(const Color& ks, float exponent) : ks_(ks), exponent_(exponent) {}
+    BlinnPhongLobe(const Color& ks, float exponent) : BsdfLobe(ks), exponent_(exponent) {}
 
     bool isDelta() const override { return false; }
     Color f(const Vec3& wo, const Vec3& wi) const override;
@@ -28,7 +28,6 @@ private:
     // D(h) / (4 wo.h) for h the half vector of wo and wi, which lie on the same side.
     float reflectedDensity(const Vec3& wo, const Vec3& wi) const;
 
-    Color ks_;
     float exponent_;
 };
 

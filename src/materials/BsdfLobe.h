@@ -9,17 +9,34 @@ namespace lancer {
 
 // One scattering lobe of a BSDF, in the local shading frame: z is the shading normal on the
 // surface's outer (front) side, directions are unit vectors pointing away from the surface.
+//
+// A lobe has a weight, the colour that bounds its albedo (kd, ks, kr, kt), which the Bsdf sums
+// for its energy scale and its choice of lobe. Lobes live in a Bsdf's inline storage, which never
+// destroys them: they must be trivially destructible, hence the protected, non-virtual destructor.
 class BsdfLobe {
 public:
-    virtual ~BsdfLobe() = default;
-
     // A delta lobe (mirror, smooth glass) scatters into single directions: f() and pdf() are 0
     // and only sample() finds them.
     virtual bool isDelta() const = 0;
+    // An ideal diffuse lobe, f = weight / pi: the light radiosity computes.
+    virtual bool isDiffuse() const { return false; }
     virtual Color f(const Vec3& wo, const Vec3& wi) const = 0;
     virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
     // A direction for wo from u in [0,1)^2, or none when the lobe has nothing to give.
     virtual std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const = 0;
+
+    const Color& weight() const { return weight_; }
+    // Multiplies the weight by s, for energy conservation.
+    void scaleWeight(float s) { weight_ *= s; }
+
+protected:
+    explicit BsdfLobe(const Color& weight) : weight_(weight) {}
+    BsdfLobe(const BsdfLobe&) = default;
+    BsdfLobe& operator=(const BsdfLobe&) = default;
+    ~BsdfLobe() = default;
+
+private:
+    Color weight_;
 };
 
 }  // namespace lancer

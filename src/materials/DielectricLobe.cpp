@@ -17,7 +17,7 @@ std::optional<BsdfSample> DielectricLobe::sample(const Vec3& wo, const Vec2& u) 
     s.isDelta = true;
     if (u.x < F) {
         s.wi = {-wo.x, -wo.y, wo.z};
-        s.f = weight_ * (F / cosThetaO);
+        s.f = weight() * (F / cosThetaO);
         s.pdf = F;
         return s;
     }
@@ -26,7 +26,7 @@ std::optional<BsdfSample> DielectricLobe::sample(const Vec3& wo, const Vec2& u) 
     if (!refracted) return std::nullopt;  // F = 1 there, so u.x < F always: never reached
     s.wi = normalize(*refracted);
     s.etaSquared = eta * eta;
-    s.f = weight_ * ((1 - F) / (std::abs(s.wi.z) * s.etaSquared));
+    s.f = weight() * ((1 - F) / (std::abs(s.wi.z) * s.etaSquared));
     s.pdf = 1 - F;
     return s;
 }

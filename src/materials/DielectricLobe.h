@@ -11,7 +11,7 @@ namespace lancer {
 // denser medium), as in pbrt and Mitsuba.
 class DielectricLobe final : public BsdfLobe {
 public:
-    DielectricLobe(const Color& weight, float ior) : weight_(weight), ior_(ior) {}
+    DielectricLobe(const Color& weight, float ior) : BsdfLobe(weight), ior_(ior) {}
 
     bool isDelta() const override { return true; }
     Color f(const Vec3&, const Vec3&) const override { return Color(0); }
@@ -20,7 +20,6 @@ public:
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
 
 private:
-    Color weight_;
     float ior_;
 };
 
