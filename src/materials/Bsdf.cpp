@@ -9,23 +9,34 @@
 #include "materials/LambertianLobe.h"
 #include "materials/Material.h"
 #include "materials/MirrorLobe.h"
+#include "materials/Optics.h"
 
 namespace lancer {
 
-Bsdf::Bsdf(const Material& material, const Hit& hit) : frame_(Frame::fromZ(hit.ns)), ng_(hit.ng) {
+namespace {
+
+// Highlights: neither the diffuse light nor the delta lobes' rays.
+bool isGlossy(const BsdfLobe& lobe) {
+    return !lobe.isDelta() && !lobe.isDiffuse();
+}
+
+}  // namespace
+
+Bsdf::Bsdf(const Material& material, const Hit& hit, Weights weights)
+    : frame_(Frame::fromZ(hit.ns)), ng_(hit.ng) {
     add<LambertianLobe>(material.diffuse->evaluate(hit));
     add<BlinnPhongLobe>(material.specular, material.shininess);
     add<MirrorLobe>(material.reflection);
     add<DielectricLobe>(material.transmission, material.ior);
-    weighLobes();
+    weighLobes(weights);
 }
 
-void Bsdf::weighLobes() {
+void Bsdf::weighLobes(Weights weights) {
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
         sum += lobes_[i]->weight();
     const float largest = sum.maxComponent();
-    if (largest > 1)
+    if (weights == Weights::EnergyConserving && largest > 1)
         for (std::size_t i = 0; i < lobeCount_; ++i)
             lobes_[i]->scaleWeight(1 / largest);
     float total = 0;
@@ -85,6 +96,61 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, float uLobe, const Vec2& 
     s->pdf = pdf(wo, s->wi);
     if (!(s->pdf > 0)) return std::nullopt;
     return s;
+}
+
+Color Bsdf::localResponse(const Vec3& wo, const Vec3& wi, bool front) const {
+    const Vec3 n = shadingNormal(front);
+    const float cosThetaL = dot(n, wi);
+    if (cosThetaL <= 0) return Color(0);
+    const float cosThetaH = dot(n, normalize(wi + wo));
+    Color sum;
+    for (std::size_t i = 0; i < lobeCount_; ++i)
+        sum += lobes_[i]->localResponse(cosThetaL, cosThetaH);
+    return sum;
+}
+
+std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
+                               std::array<SpecularRay, kMaxSpecularRays>& rays) const {
+    const Vec3 n = shadingNormal(front);
+    const float cosThetaO = std::min(1.0f, std::abs(dot(wo, n)));
+    // Refractions from rays[1] on, behind the reflection's place.
+    Color reflected;
+    std::size_t count = 1;
+    for (std::size_t i = 0; i < lobeCount_; ++i) {
+        if (!lobes_[i]->isDelta()) continue;
+        const SpecularSplit split = lobes_[i]->specularSplit(cosThetaO, front);
+        reflected += split.reflected;
+        if (split.refracted.isBlack()) continue;
+        if (const std::optional<Vec3> refracted = refract(wo, n, split.eta))
+            rays[count++] = {normalize(*refracted), split.refracted};
+    }
+    if (!reflected.isBlack()) {
+        rays[0] = {reflect(wo, n), reflected};
+        return count;
+    }
+    std::copy(rays.begin() + 1, rays.begin() + static_cast<std::ptrdiff_t>(count), rays.begin());
+    return count - 1;
+}
+
+Color Bsdf::diffuseReflectance() const {
+    Color sum;
+    for (std::size_t i = 0; i < lobeCount_; ++i)
+        if (lobes_[i]->isDiffuse()) sum += lobes_[i]->weight();
+    return sum;
+}
+
+bool Bsdf::hasGlossyLobe() const {
+    for (std::size_t i = 0; i < lobeCount_; ++i)
+        if (isGlossy(*lobes_[i])) return true;
+    return false;
+}
+
+Color Bsdf::glossyF(const Vec3& wo, const Vec3& wi) const {
+    const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
+    Color sum;
+    for (std::size_t i = 0; i < lobeCount_; ++i)
+        if (isGlossy(*lobes_[i])) sum += lobes_[i]->f(woLocal, wiLocal);
+    return sum;
 }
 
 }  // namespace lancer

@@ -10,6 +10,7 @@
 
 #include "materials/BsdfLobe.h"
 #include "materials/BsdfSample.h"
+#include "materials/SpecularRay.h"
 #include "math/Frame.h"
 
 namespace lancer {
@@ -23,6 +24,10 @@ struct Hit;
 // are divided by the largest channel sum, so that no light is created. One lobe is sampled,
 // chosen in proportion to its (scaled) weight averaged over the channels.
 //
+// Whitted and radiosity shade with the scene format's equation instead, from the same lobes with
+// their weights as given: the lobes' local responses lit by the lights, the delta lobes' light
+// traced along specular rays, and (radiosity) the diffuse lobes' albedo and the other lobes' f.
+//
 // Directions are in world space, unit length and point away from the surface. The lobes live in
 // the frame of the shading normal (turned to the front side); light that would cross the
 // geometric surface the wrong way (a reflection lobe reaching below the true surface because of
@@ -30,8 +35,15 @@ struct Hit;
 class Bsdf {
 public:
     static constexpr std::size_t kMaxLobes = 4;
+    // One reflection (the mirror directions coincide) and a refraction per lobe.
+    static constexpr std::size_t kMaxSpecularRays = kMaxLobes + 1;
 
-    Bsdf(const Material& material, const Hit& hit);
+    enum class Weights {
+        EnergyConserving,  // the path tracer's
+        AsGiven,           // the scene format's equation (Whitted, radiosity)
+    };
+
+    Bsdf(const Material& material, const Hit& hit, Weights weights = Weights::EnergyConserving);
     // The lobes point into the object's own storage.
     Bsdf(const Bsdf&) = delete;
     Bsdf& operator=(const Bsdf&) = delete;
@@ -54,6 +66,24 @@ public:
     bool hasNonDeltaLobe() const;
     // The shading normal on the front side.
     const Vec3& shadingNormal() const { return frame_.n; }
+    // The shading normal on the given side of the geometric surface (front: ng's side).
+    Vec3 shadingNormal(bool front) const { return front ? frame_.n : -frame_.n; }
+
+    // Whitted's local model for light arriving from wi, seen from wo on the given side of the
+    // surface: the sum of the lobes' local responses, black for light behind that side's
+    // shading normal.
+    Color localResponse(const Vec3& wo, const Vec3& wi, bool front) const;
+    // The rays Whitted traces from wo on the given side: the delta lobes' reflections about the
+    // shading normal merged into one, then their refractions. Returns how many were written.
+    std::size_t specularRays(const Vec3& wo, bool front,
+                             std::array<SpecularRay, kMaxSpecularRays>& rays) const;
+    // The albedo of the ideal diffuse lobes (f = albedo / pi), which radiosity handles.
+    Color diffuseReflectance() const;
+    // Whether some lobe is neither diffuse nor delta (highlights).
+    bool hasGlossyLobe() const;
+    // The sum of f over the lobes neither diffuse nor delta, without the geometric cut: the
+    // highlights that radiosity adds for the lights, judged by the shading normal alone.
+    Color glossyF(const Vec3& wo, const Vec3& wi) const;
 
 private:
     // Room for the largest lobe, a vtable pointer and a few colours.
@@ -62,8 +92,8 @@ private:
         std::byte bytes[kLobeSize];
     };
 
-    // Divides the weights for energy conservation and sets the lobes' probabilities.
-    void weighLobes();
+    // Divides the weights for energy conservation if asked and sets the lobes' probabilities.
+    void weighLobes(Weights weights);
 
     // Whether wo and wi lie on the sides of the geometric surface that a reflection needs.
     bool reflectsGeometrically(const Vec3& wo, const Vec3& wi) const {

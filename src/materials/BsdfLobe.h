@@ -3,6 +3,7 @@
 #include <optional>
 
 #include "materials/BsdfSample.h"
+#include "materials/SpecularSplit.h"
 #include "math/Vec2.h"
 
 namespace lancer {
@@ -24,6 +25,15 @@ public:
     virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
     // A direction for wo from u in [0,1)^2, or none when the lobe has nothing to give.
     virtual std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const = 0;
+
+    // The classic local model that Whitted shades with, next to the physical f(): the light
+    // reflected towards the viewer per unit of a light's irradiance E_l, for the light at
+    // cosThetaL > 0 from the shading normal on the viewer's side and the half vector of light and
+    // viewer at cosThetaH. Black for delta lobes, whose light Whitted traces instead.
+    virtual Color localResponse(float /*cosThetaL*/, float /*cosThetaH*/) const { return Color(0); }
+    // How a delta lobe splits the light from a viewer at cosThetaO (>= 0) from the shading normal
+    // on its side, on the front side or not (outside). Nothing for other lobes.
+    virtual SpecularSplit specularSplit(float /*cosThetaO*/, bool /*outside*/) const { return {}; }
 
     const Color& weight() const { return weight_; }
     // Multiplies the weight by s, for energy conservation.

@@ -6,6 +6,12 @@
 
 namespace lancer {
 
+SpecularSplit DielectricLobe::specularSplit(float cosThetaO, bool outside) const {
+    const float eta = outside ? ior_ : 1 / ior_;
+    const float F = fresnelDielectric(cosThetaO, eta);
+    return {weight() * F, weight() * (1 - F), eta};
+}
+
 std::optional<BsdfSample> DielectricLobe::sample(const Vec3& wo, const Vec2& u) const {
     if (wo.z == 0) return std::nullopt;
     const bool outside = wo.z > 0;
