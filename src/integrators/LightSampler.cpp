@@ -66,7 +66,7 @@ void LightSampler::addEmitters(const Shape& placed) {
     const auto addTriangle = [&](std::array<Vec3, 3> vertices, std::uint32_t index,
                                  const Material* material) {
         if (materialOverride) material = materialOverride;
-        if (!material || material->emission.isBlack()) return;
+        if (!material || material->emission().isBlack()) return;
         Vec3 front = cross(vertices[1] - vertices[0], vertices[2] - vertices[0]);
         if (toWorld) {
             // The front side follows the normal as transformed (a mirroring transform turns the
@@ -75,7 +75,7 @@ void LightSampler::addEmitters(const Shape& placed) {
             for (Vec3& v : vertices)
                 v = toWorld->applyPoint(v);
         }
-        addEmitterLight(std::make_unique<TriangleLight>(vertices, front, material->emission),
+        addEmitterLight(std::make_unique<TriangleLight>(vertices, front, material->emission()),
                         placed, index);
     };
     if (const auto* mesh = dynamic_cast<const Mesh*>(shape)) {
@@ -94,8 +94,9 @@ void LightSampler::addEmitters(const Shape& placed) {
         addTriangle(triangle->vertices(), triangle->index(), triangle->material());
     } else if (const auto* sphere = dynamic_cast<const Sphere*>(shape); sphere && !toWorld) {
         const Material* material = sphere->material();
-        if (material && !material->emission.isBlack())
-            addEmitterLight(std::make_unique<SphereLight>(*sphere, material->emission), placed, 0);
+        if (material && !material->emission().isBlack())
+            addEmitterLight(std::make_unique<SphereLight>(*sphere, material->emission()), placed,
+                            0);
     }
 }
 

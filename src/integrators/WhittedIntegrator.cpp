@@ -58,7 +58,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     const Bsdf bsdf(material, hit, Bsdf::Weights::AsGiven);
 
     Color L;
-    if (front || hit.shape->emitsOnBothSides()) L += material.emission;
+    if (front || hit.shape->emitsOnBothSides()) L += material.emission();
     L += localShading(hit, bsdf, wo, front, sampler, rayCount);
 
     if (depth >= maxDepth_) return L;
@@ -97,7 +97,7 @@ Vec2 stratifiedPoint(int k, int count, const Vec2& offset, std::uint64_t jitterS
 
 Color WhittedIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const Vec3& wo, bool front,
                                       Sampler& sampler, std::uint64_t& rayCount) const {
-    return hit.material->ambient->evaluate(hit) * scene_.ambient() +
+    return hit.material->ambientReflectance(hit) * scene_.ambient() +
            directLighting(hit, bsdf, wo, front, sampler, rayCount);
 }
 

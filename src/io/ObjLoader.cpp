@@ -60,8 +60,8 @@
 #include <utility>
 #include <vector>
 
+#include "materials/BlinnPhongMaterial.h"
 #include "materials/ConstantTexture.h"
-#include "materials/Material.h"
 #include "math/Float.h"
 #include "scene/InputError.h"
 
@@ -391,7 +391,7 @@ public:
     std::shared_ptr<const Material> convert(const tinyobj::material_t& mtl,
                                             const fs::path& mtlPath) {
         const IlluminationModel& model = illuminationModel(mtl, mtlPath);
-        auto material = std::make_shared<Material>();
+        auto material = std::make_unique<BlinnPhongMaterial::Parameters>();
         const Color kd = isGiven(mtl.diffuse) ? colorOf(mtl.diffuse) : Color(kDefaultDiffuse);
         const Color ka = colorOf(mtl.ambient), ks = colorOf(mtl.specular);
         material->emission = colorOf(mtl.emission);
@@ -421,7 +421,7 @@ public:
             material->transmission = Color(1 - opacity);
             material->ior = 1;
         }
-        return material;
+        return std::make_shared<BlinnPhongMaterial>(std::move(*material));
     }
 
 private:
@@ -618,7 +618,7 @@ private:
         if (!isNew) return slot->second;
         slot->second = std::uint32_t(mesh_->materials.size());
         if (!defined) {
-            mesh_->materials.push_back(std::make_shared<Material>());
+            mesh_->materials.push_back(std::make_shared<BlinnPhongMaterial>());
         } else {
             const std::size_t index = std::size_t(material);
             mesh_->materials.push_back(

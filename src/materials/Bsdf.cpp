@@ -4,11 +4,7 @@
 #include <cmath>
 
 #include "geometry/Hit.h"
-#include "materials/BlinnPhongLobe.h"
-#include "materials/DielectricLobe.h"
-#include "materials/LambertianLobe.h"
 #include "materials/Material.h"
-#include "materials/MirrorLobe.h"
 #include "materials/Optics.h"
 
 namespace lancer {
@@ -24,10 +20,7 @@ bool isGlossy(const BsdfLobe& lobe) {
 
 Bsdf::Bsdf(const Material& material, const Hit& hit, Weights weights)
     : frame_(Frame::fromZ(hit.ns)), ng_(hit.ng) {
-    add<LambertianLobe>(material.diffuse->evaluate(hit));
-    add<BlinnPhongLobe>(material.specular, material.shininess);
-    add<MirrorLobe>(material.reflection);
-    add<DielectricLobe>(material.transmission, material.ior);
+    material.addLobes(hit, *this);
     weighLobes(weights);
 }
 

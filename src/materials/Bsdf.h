@@ -48,7 +48,8 @@ public:
     Bsdf(const Bsdf&) = delete;
     Bsdf& operator=(const Bsdf&) = delete;
 
-    // Adds a lobe made from args; one of black weight adds nothing.
+    // Adds a lobe made from args (Material::addLobes does, while the Bsdf is built); one of
+    // black weight adds nothing.
     template <class Lobe, class... Args>
     void add(Args&&... args);
 

@@ -76,7 +76,7 @@ Color Scene::transmittance(const Hit& from, const LightSample& light,
         ++rayCount;
         Hit blocker;
         if (!intersect(ray, tMax, blocker)) return visibility;
-        visibility *= blocker.material->transmission;
+        visibility *= blocker.material->transmission();
         if (visibility.isBlack()) return visibility;
         surface = blocker;
     }

@@ -17,11 +17,11 @@
 
 #include "geometry/Hit.h"
 #include "materials/BlinnPhongLobe.h"
+#include "materials/BlinnPhongMaterial.h"
 #include "materials/Bsdf.h"
 #include "materials/ConstantTexture.h"
 #include "materials/DielectricLobe.h"
 #include "materials/LambertianLobe.h"
-#include "materials/Material.h"
 #include "materials/MirrorLobe.h"
 #include "materials/Optics.h"
 #include "math/Float.h"
@@ -211,17 +211,24 @@ INSTANTIATE_TEST_SUITE_P(
 // A material made of the given weights, seen at a hit whose normals are +z (or the shading normal
 // tilted away from the geometric one by `tiltDegrees`).
 struct MaterialAtHit {
-    Material material;
+    BlinnPhongMaterial material;
     Hit hit;
 
-    MaterialAtHit(float kd, float ks, float shininess, float kr, float kt, float tiltDegrees = 0) {
-        material.diffuse = std::make_shared<ConstantTexture>(Color(kd));
-        material.specular = Color(ks);
-        material.shininess = shininess;
-        material.reflection = Color(kr);
-        material.transmission = Color(kt);
+    MaterialAtHit(float kd, float ks, float shininess, float kr, float kt, float tiltDegrees = 0)
+        : material(weights(kd, ks, shininess, kr, kt)) {
         hit.ng = Vec3(0, 0, 1);
         hit.ns = direction(tiltDegrees, 0);
+    }
+
+    static BlinnPhongMaterial::Parameters weights(float kd, float ks, float shininess, float kr,
+                                                  float kt) {
+        BlinnPhongMaterial::Parameters p;
+        p.diffuse = std::make_shared<ConstantTexture>(Color(kd));
+        p.specular = Color(ks);
+        p.shininess = shininess;
+        p.reflection = Color(kr);
+        p.transmission = Color(kt);
+        return p;
     }
 };
 

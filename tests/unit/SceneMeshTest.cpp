@@ -7,6 +7,7 @@
 #include <string>
 
 #include "io/SceneLoader.h"
+#include "materials/Material.h"
 #include "scene/InputError.h"
 
 namespace lancer {
@@ -131,8 +132,8 @@ TEST_F(SceneMeshTest, MeshMaterialReplacesTheModelsOwn) {
     Hit a, b;
     ASSERT_TRUE(own.intersect({{0, 0, 5}, {0, 0, -1}}, kInfinity, a));
     ASSERT_TRUE(replaced.intersect({{0, 0, 5}, {0, 0, -1}}, kInfinity, b));
-    EXPECT_EQ(a.material->diffuse->evaluate(a), Color(1, 0, 0));
-    EXPECT_EQ(b.material->diffuse->evaluate(b), Color(0, 0, 1));
+    EXPECT_EQ(a.material->diffuseReflectance(a), Color(1, 0, 0));
+    EXPECT_EQ(b.material->diffuseReflectance(b), Color(0, 0, 1));
 }
 
 struct BadInput {
