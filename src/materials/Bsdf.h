@@ -87,7 +87,7 @@ public:
     Color glossyF(const Vec3& wo, const Vec3& wi) const;
 
 private:
-    // Room for the largest lobe, a vtable pointer and a few colours.
+    // A vtable pointer and up to three colours: room to spare over the lobes of today.
     static constexpr std::size_t kLobeSize = 48;
     struct alignas(alignof(std::max_align_t)) LobeStorage {
         std::byte bytes[kLobeSize];
