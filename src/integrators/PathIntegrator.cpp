@@ -70,7 +70,8 @@ Color PathIntegrator::radiance(const Ray& cameraRay, float, Sampler& sampler,
         const Hit& hit = *found;
         const Material& material = *hit.material;
         const Vec3 wo = -normalize(ray.direction);
-        if (!material.emission.isBlack() && (hit.frontFace(ray) || hit.shape->emitsOnBothSides())) {
+        if (!material.emission().isBlack() &&
+            (hit.frontFace(ray) || hit.shape->emitsOnBothSides())) {
             float weight = 1;
             // A BSDF ray hitting a light that light sampling could also have found.
             if (bounces > 0 && !afterDelta) {
@@ -80,7 +81,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, float, Sampler& sampler,
                     weight = powerHeuristic(lastBsdfPdf, lightPdf);
                 }
             }
-            L += throughput * material.emission * weight;
+            L += throughput * material.emission() * weight;
         }
         if (bounces >= maxDepth_) break;
 

@@ -5,8 +5,7 @@
 
 #include "integrators/IntegratorRegistry.h"
 #include "lights/Light.h"
-#include "materials/BlinnPhongLobe.h"
-#include "materials/Material.h"
+#include "materials/Bsdf.h"
 #include "radiosity/RadiositySolver.h"
 #include "sampling/Sampler.h"
 #include "sampling/Sampling.h"
@@ -29,11 +28,12 @@ std::unique_ptr<Integrator> RadiosityIntegrator::create(const Scene& scene,
         std::make_shared<const RadiositySolution>(std::move(*solution)));
 }
 
-Color RadiosityIntegrator::localShading(const Hit& hit, const Vec3& n, const Vec3& wo,
-                                        Sampler& sampler, std::uint64_t& rayCount) const {
-    const Material& material = *hit.material;
+Color RadiosityIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
+                                        bool front, Sampler& sampler,
+                                        std::uint64_t& rayCount) const {
+    const Vec3 n = bsdf.shadingNormal(front);
     Color L;
-    const Color kd = material.diffuse->evaluate(hit);
+    const Color kd = bsdf.diffuseReflectance();
     if (!kd.isBlack()) {
         std::optional<Color> E = solution_->irradiance(hit.p, hit.ng, wo);
         if (!E) {
@@ -47,19 +47,13 @@ Color RadiosityIntegrator::localShading(const Hit& hit, const Vec3& n, const Vec
         }
         L += kd * *E / kPi;
     }
-    if (!material.specular.isBlack()) L += highlights(hit, n, wo, sampler, rayCount);
+    if (bsdf.hasGlossyLobe()) L += highlights(hit, bsdf, n, wo, sampler, rayCount);
     return L;
 }
 
-Color RadiosityIntegrator::highlights(const Hit& hit, const Vec3& n, const Vec3& wo,
-                                      Sampler& sampler, std::uint64_t& rayCount) const {
-    const Material& material = *hit.material;
-    // The path integrator's lobe, in the frame of the shading normal.
-    const BlinnPhongLobe lobe(material.specular, material.shininess);
-    Vec3 a, b;
-    coordinateSystem(n, a, b);
-    const auto local = [&](const Vec3& v) { return Vec3(dot(v, a), dot(v, b), dot(v, n)); };
-    const Vec3 woLocal = local(wo);
+Color RadiosityIntegrator::highlights(const Hit& hit, const Bsdf& bsdf, const Vec3& n,
+                                      const Vec3& wo, Sampler& sampler,
+                                      std::uint64_t& rayCount) const {
     Color L;
     for (const auto& light : scene().lights()) {
         const int count = light->isDelta() ? 1 : light->shadowSamples();
@@ -69,7 +63,7 @@ Color RadiosityIntegrator::highlights(const Hit& hit, const Vec3& n, const Vec3&
             const LightSample ls = light->sample(hit.p, u);
             const float cosTheta = dot(n, ls.wi);
             if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
-            const Color f = lobe.f(woLocal, local(ls.wi));
+            const Color f = bsdf.glossyF(wo, ls.wi);
             if (f.isBlack()) continue;
             sum += cosTheta * f * ls.irradiance * scene().transmittance(hit, ls, rayCount);
         }

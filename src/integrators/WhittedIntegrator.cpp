@@ -1,11 +1,11 @@
 #include "integrators/WhittedIntegrator.h"
 
-#include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 
+#include "materials/Bsdf.h"
 #include "materials/Material.h"
-#include "materials/Optics.h"
 #include "sampling/Sampler.h"
 #include "sampling/Sampling.h"
 #include "scene/Scene.h"
@@ -54,33 +54,21 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
 
     const Material& material = *hit.material;
     const Vec3 wo = -normalize(ray.direction);
-    const bool front = hit.frontFace(ray);
     // Shade the side the ray arrived on.
-    const Vec3 n = front ? hit.ns : -hit.ns;
+    const bool front = hit.frontFace(ray);
+    const Bsdf bsdf(material, hit, Bsdf::Weights::AsGiven);
 
     Color L;
-    if (front || hit.shape->emitsOnBothSides()) L += material.emission;
-    L += localShading(hit, n, wo, sampler, rayCount);
+    if (front || hit.shape->emitsOnBothSides()) L += material.emission();
+    L += localShading(hit, bsdf, wo, front, sampler, rayCount);
 
     if (depth >= maxDepth_) return L;
 
-    Color reflectionWeight = material.reflection;
-    Color refractionWeight;
-    std::optional<Vec3> refracted;
-    if (material.isTransmissive()) {
-        // eta: index beyond the surface over index on the ray's side.
-        const float eta = front ? material.ior : 1 / material.ior;
-        const float F = fresnelDielectric(std::min(1.0f, std::abs(dot(wo, n))), eta);
-        reflectionWeight += material.transmission * F;
-        refractionWeight = material.transmission * (1 - F);
-        if (!refractionWeight.isBlack()) refracted = refract(wo, n, eta);
-    }
-    if (!reflectionWeight.isBlack())
-        L += reflectionWeight * trace({hit.spawnRay(reflect(wo, n)), distance, path.spread},
-                                      depth + 1, sampler, rayCount);
-    if (refracted)
-        L += refractionWeight * trace({hit.spawnRay(normalize(*refracted)), distance, path.spread},
-                                      depth + 1, sampler, rayCount);
+    std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
+    const std::size_t count = bsdf.specularRays(wo, front, rays);
+    for (std::size_t i = 0; i < count; ++i)
+        L += rays[i].weight * trace({hit.spawnRay(rays[i].direction), distance, path.spread},
+                                    depth + 1, sampler, rayCount);
     return L;
 }
 
@@ -108,24 +96,18 @@ Vec2 stratifiedPoint(int k, int count, const Vec2& offset, std::uint64_t jitterS
 
 }  // namespace
 
-Color WhittedIntegrator::localShading(const Hit& hit, const Vec3& n, const Vec3& wo,
+Color WhittedIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const Vec3& wo, bool front,
                                       Sampler& sampler, std::uint64_t& rayCount) const {
-    return hit.material->ambient->evaluate(hit) * scene_.ambient() +
-           directLighting(hit, n, wo, sampler, rayCount);
+    return hit.material->ambientReflectance(hit) * scene_.ambient() +
+           directLighting(hit, bsdf, wo, front, sampler, rayCount);
 }
 
-Color WhittedIntegrator::directLighting(const Hit& hit, const Vec3& n, const Vec3& wo,
-                                        Sampler& sampler, std::uint64_t& rayCount) const {
-    const Material& material = *hit.material;
-    const Color kd = material.diffuse->evaluate(hit);
+Color WhittedIntegrator::directLighting(const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
+                                        bool front, Sampler& sampler,
+                                        std::uint64_t& rayCount) const {
     // V_l E_l (kd max(0, n.L) + ks max(0, n.h)^n [n.L > 0]) for one sample of a light.
     const auto shade = [&](const LightSample& ls) {
-        const float cosTheta = dot(n, ls.wi);
-        if (cosTheta <= 0) return Color(0);  // both terms vanish when the light is behind
-        const Vec3 h = normalize(ls.wi + wo);
-        const Color brdfCos =
-            kd * cosTheta +
-            material.specular * std::pow(std::max(0.0f, dot(n, h)), material.shininess);
+        const Color brdfCos = bsdf.localResponse(wo, ls.wi, front);
         if (brdfCos.isBlack() || ls.irradiance.isBlack()) return Color(0);
         return scene_.transmittance(hit, ls, rayCount) * ls.irradiance * brdfCos;
     };

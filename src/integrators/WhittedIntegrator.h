@@ -6,14 +6,16 @@
 
 namespace lancer {
 
+class Bsdf;
 class Scene;
 struct IntegratorSetup;
 struct Hit;
 
-// Whitted ray tracing with the scene format's shading equation: emission, ambient, Blinn-Phong
-// direct lighting with shadow rays, and recursive mirror reflection and refraction (weights split
-// by the Fresnel term for transmissive materials) up to maxDepth bounces. Subclasses may replace
-// the local shading (ambient and direct lighting) and keep the rest (radiosity does).
+// Whitted ray tracing with the scene format's shading equation, from the BSDF's lobes: emission,
+// ambient, the lobes' local responses to the lights with shadow rays, and the delta lobes'
+// recursive reflection and refraction (weights split by the Fresnel term for transmissive
+// materials) up to maxDepth bounces. Subclasses may replace the local shading (ambient and
+// direct lighting) and keep the rest (radiosity does).
 class WhittedIntegrator : public Integrator {
 public:
     WhittedIntegrator(const Scene& scene, int maxDepth);
@@ -24,9 +26,10 @@ public:
 
 protected:
     // The light a surface reflects towards wo besides emission, reflection and refraction:
-    // ambient and Blinn-Phong direct lighting. n is the shading normal on wo's side.
-    virtual Color localShading(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,
-                               std::uint64_t& rayCount) const;
+    // ambient and the lobes' local responses to the lights. wo is on the front side of the
+    // geometric surface or not.
+    virtual Color localShading(const Hit& hit, const Bsdf& bsdf, const Vec3& wo, bool front,
+                               Sampler& sampler, std::uint64_t& rayCount) const;
 
     const Scene& scene() const { return scene_; }
 
@@ -40,8 +43,8 @@ private:
     };
 
     Color trace(const PathRay& path, int depth, Sampler& sampler, std::uint64_t& rayCount) const;
-    Color directLighting(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,
-                         std::uint64_t& rayCount) const;
+    Color directLighting(const Hit& hit, const Bsdf& bsdf, const Vec3& wo, bool front,
+                         Sampler& sampler, std::uint64_t& rayCount) const;
 
     const Scene& scene_;
     int maxDepth_;

@@ -42,8 +42,8 @@
 #include <istream>
 
 #include "io/ObjSupport.h"
+#include "materials/BlinnPhongMaterial.h"
 #include "materials/ConstantTexture.h"
-#include "materials/Material.h"
 #include "math/Float.h"
 #include "scene/InputError.h"
 
@@ -131,37 +131,36 @@ MtlMaterialConverter::MtlMaterialConverter(const ObjLoader::TextureLoader& loadT
 std::shared_ptr<const Material> MtlMaterialConverter::convert(const tinyobj::material_t& mtl,
                                                               const fs::path& mtlPath) {
     const IlluminationModel& model = illuminationModel(mtl, mtlPath, warnings_);
-    auto material = std::make_shared<Material>();
+    BlinnPhongMaterial::Parameters material;
     const Color kd = isGiven(mtl.diffuse) ? colorOf(mtl.diffuse) : Color(kDefaultDiffuse);
     const Color ka = colorOf(mtl.ambient), ks = colorOf(mtl.specular);
-    material->emission = colorOf(mtl.emission);
+    material.emission = colorOf(mtl.emission);
     if (model.lit) {
         std::shared_ptr<const Texture> texture;
         if (!mtl.diffuse_texname.empty()) texture = diffuseTexture(mtl, mtlPath);
-        material->diffuse = texture ? texture : std::make_shared<ConstantTexture>(kd);
-        material->ambient =
-            ka.isBlack() ? material->diffuse : std::make_shared<ConstantTexture>(ka);
+        material.diffuse = texture ? texture : std::make_shared<ConstantTexture>(kd);
+        material.ambient = ka.isBlack() ? material.diffuse : std::make_shared<ConstantTexture>(ka);
     } else {
-        material->emission += kd;
-        material->diffuse = material->ambient = std::make_shared<ConstantTexture>(Color(0));
+        material.emission += kd;
+        material.diffuse = material.ambient = std::make_shared<ConstantTexture>(Color(0));
         if (!mtl.diffuse_texname.empty())
             warn(warnings_, mtlPath,
                  "material " + inQuotes(mtl.name) +
                      " is illum 0, an unlit constant colour: it shows its Kd colour, not "
                      "its map_Kd texture");
     }
-    if (model.highlights) material->specular = ks;
-    if (model.mirror) material->reflection = ks;
-    if (mtl.shininess >= 0) material->shininess = mtl.shininess;
-    if (mtl.ior > 0) material->ior = mtl.ior;
+    if (model.highlights) material.specular = ks;
+    if (model.mirror) material.reflection = ks;
+    if (mtl.shininess >= 0) material.shininess = mtl.shininess;
+    if (mtl.ior > 0) material.ior = mtl.ior;
     const float opacity = std::isfinite(mtl.dissolve) ? clamp(mtl.dissolve, 0.0f, 1.0f) : 1;
     if (model.glass) {
-        material->transmission = Color(1);
+        material.transmission = Color(1);
     } else if (opacity < 1) {
-        material->transmission = Color(1 - opacity);
-        material->ior = 1;
+        material.transmission = Color(1 - opacity);
+        material.ior = 1;
     }
-    return material;
+    return std::make_shared<BlinnPhongMaterial>(std::move(material));
 }
 
 std::shared_ptr<const Texture> MtlMaterialConverter::diffuseTexture(const tinyobj::material_t& mtl,

@@ -28,7 +28,7 @@
 #include "geometry/PolygonTriangulator.h"
 #include "io/MtlMaterialConverter.h"
 #include "io/ObjSupport.h"
-#include "materials/Material.h"
+#include "materials/BlinnPhongMaterial.h"
 #include "scene/InputError.h"
 
 namespace lancer {
@@ -341,7 +341,7 @@ private:
         if (!isNew) return slot->second;
         slot->second = std::uint32_t(mesh_->materials.size());
         if (!defined) {
-            mesh_->materials.push_back(std::make_shared<Material>());
+            mesh_->materials.push_back(std::make_shared<BlinnPhongMaterial>());
         } else {
             const std::size_t index = std::size_t(material);
             mesh_->materials.push_back(

@@ -19,6 +19,7 @@
 #include "lights/DirectionalLight.h"
 #include "lights/PointLight.h"
 #include "lights/SpotLight.h"
+#include "materials/BlinnPhongMaterial.h"
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
 #include "materials/ImageTexture.h"
@@ -107,7 +108,7 @@ Scene SceneLoader::load() {
               {"render", "camera", "background", "ambient", "materials", "objects", "lights",
                "radiosity"});
 
-    defaultMaterial_ = scene_.addMaterial(std::make_unique<Material>());
+    defaultMaterial_ = scene_.addMaterial(std::make_unique<BlinnPhongMaterial>());
     if (root.has("render")) loadRender(root["render"]);
     if (root.has("radiosity")) loadRadiosity(root["radiosity"]);
     if (!root.has("camera")) fail(root, "the scene has no \"camera\"");
@@ -268,16 +269,16 @@ std::unique_ptr<Material> SceneLoader::loadMaterial(const Node& node) {
     checkKeys(node, "a material",
               {"diffuse", "ambient", "specular", "shininess", "reflection", "transmission", "ior",
                "emission"});
-    auto m = std::make_unique<Material>();
-    if (node.has("diffuse")) m->diffuse = loadTexture(node["diffuse"]);
-    m->ambient = node.has("ambient") ? loadTexture(node["ambient"]) : m->diffuse;
-    if (node.has("specular")) m->specular = readColor(node["specular"]);
-    if (node.has("shininess")) m->shininess = readNumberAtLeast(node["shininess"], 0, true);
-    if (node.has("reflection")) m->reflection = readColor(node["reflection"]);
-    if (node.has("transmission")) m->transmission = readColor(node["transmission"]);
-    if (node.has("ior")) m->ior = readNumberAtLeast(node["ior"], 0, false);
-    if (node.has("emission")) m->emission = readColor(node["emission"]);
-    return m;
+    BlinnPhongMaterial::Parameters m;
+    if (node.has("diffuse")) m.diffuse = loadTexture(node["diffuse"]);
+    m.ambient = node.has("ambient") ? loadTexture(node["ambient"]) : m.diffuse;
+    if (node.has("specular")) m.specular = readColor(node["specular"]);
+    if (node.has("shininess")) m.shininess = readNumberAtLeast(node["shininess"], 0, true);
+    if (node.has("reflection")) m.reflection = readColor(node["reflection"]);
+    if (node.has("transmission")) m.transmission = readColor(node["transmission"]);
+    if (node.has("ior")) m.ior = readNumberAtLeast(node["ior"], 0, false);
+    if (node.has("emission")) m.emission = readColor(node["emission"]);
+    return std::make_unique<BlinnPhongMaterial>(std::move(m));
 }
 
 std::shared_ptr<const Texture> SceneLoader::loadTexture(const Node& node) {
@@ -606,11 +607,11 @@ void SceneLoader::loadSpotLight(const Node& node) {
 }
 
 const Material* SceneLoader::emitterOf(const Color& radiance) {
-    auto material = std::make_unique<Material>();
-    material->diffuse = std::make_shared<ConstantTexture>(Color(0));
-    material->ambient = material->diffuse;
-    material->emission = radiance;
-    return scene_.addMaterial(std::move(material));
+    BlinnPhongMaterial::Parameters material;
+    material.diffuse = std::make_shared<ConstantTexture>(Color(0));
+    material.ambient = material.diffuse;
+    material.emission = radiance;
+    return scene_.addMaterial(std::make_unique<BlinnPhongMaterial>(std::move(material)));
 }
 
 void SceneLoader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,

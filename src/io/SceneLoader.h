@@ -8,6 +8,7 @@
 
 #include "accel/Mesh.h"
 #include "io/JsonDocument.h"
+#include "materials/Texture.h"
 #include "math/Transform.h"
 #include "scene/Scene.h"
 #include "util/Registry.h"

@@ -22,12 +22,16 @@ float BlinnPhongLobe::reflectedDensity(const Vec3& wo, const Vec3& wi) const {
 
 Color BlinnPhongLobe::f(const Vec3& wo, const Vec3& wi) const {
     if (wo.z * wi.z <= 0) return Color(0);
-    return ks_ * (reflectedDensity(wo, wi) / std::max(std::abs(wo.z), std::abs(wi.z)));
+    return weight() * (reflectedDensity(wo, wi) / std::max(std::abs(wo.z), std::abs(wi.z)));
 }
 
 float BlinnPhongLobe::pdf(const Vec3& wo, const Vec3& wi) const {
     if (wo.z * wi.z <= 0) return 0;
     return reflectedDensity(wo, wi);
+}
+
+Color BlinnPhongLobe::localResponse(float, float cosThetaH) const {
+    return weight() * std::pow(std::max(0.0f, cosThetaH), exponent_);
 }
 
 std::optional<BsdfSample> BlinnPhongLobe::sample(const Vec3& wo, const Vec2& u) const {

@@ -17,18 +17,19 @@ namespace lancer {
 // wo and wi.
 class BlinnPhongLobe final : public BsdfLobe {
 public:
-    BlinnPhongLobe(const Color& ks, float exponent) : ks_(ks), exponent_(exponent) {}
+    BlinnPhongLobe(const Color& ks, float exponent) : BsdfLobe(ks), exponent_(exponent) {}
 
     bool isDelta() const override { return false; }
     Color f(const Vec3& wo, const Vec3& wi) const override;
     float pdf(const Vec3& wo, const Vec3& wi) const override;
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
+    // The classic highlight ks max(0, n.h)^n, not normalized.
+    Color localResponse(float cosThetaL, float cosThetaH) const override;
 
 private:
     // D(h) / (4 wo.h) for h the half vector of wo and wi, which lie on the same side.
     float reflectedDensity(const Vec3& wo, const Vec3& wi) const;
 
-    Color ks_;
     float exponent_;
 };
 

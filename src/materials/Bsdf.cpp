@@ -5,49 +5,44 @@
 
 #include "geometry/Hit.h"
 #include "materials/Material.h"
+#include "materials/Optics.h"
 
 namespace lancer {
 
 namespace {
 
-// The factor bringing kd + ks + kr + kt to at most 1 in every channel.
-float energyScale(const Color& kd, const Color& ks, const Color& kr, const Color& kt) {
-    const float largest = (kd + ks + kr + kt).maxComponent();
-    return largest > 1 ? 1 / largest : 1;
+// Highlights: neither the diffuse light nor the delta lobes' rays.
+bool isGlossy(const BsdfLobe& lobe) {
+    return !lobe.isDelta() && !lobe.isDiffuse();
 }
 
 }  // namespace
 
-Bsdf::Bsdf(const Material& material, const Hit& hit)
-    : frame_(Frame::fromZ(hit.ns)),
-      ng_(hit.ng),
-      lambertian_(Color(0)),
-      blinnPhong_(Color(0), material.shininess),
-      mirror_(Color(0)),
-      dielectric_(Color(0), material.ior),
-      lobes_{&lambertian_, &blinnPhong_, &mirror_, &dielectric_} {
-    const Color kd = material.diffuse->evaluate(hit);
-    const float scale =
-        energyScale(kd, material.specular, material.reflection, material.transmission);
-    const std::array<Color, kLobeCount> weights{kd * scale, material.specular * scale,
-                                                material.reflection * scale,
-                                                material.transmission * scale};
-    lambertian_ = LambertianLobe(weights[0]);
-    blinnPhong_ = BlinnPhongLobe(weights[1], material.shininess);
-    mirror_ = MirrorLobe(weights[2]);
-    dielectric_ = DielectricLobe(weights[3], material.ior);
+Bsdf::Bsdf(const Material& material, const Hit& hit, Weights weights)
+    : frame_(Frame::fromZ(hit.ns)), ng_(hit.ng) {
+    material.addLobes(hit, *this);
+    weighLobes(weights);
+}
+
+void Bsdf::weighLobes(Weights weights) {
+    Color sum;
+    for (std::size_t i = 0; i < lobeCount_; ++i)
+        sum += lobes_[i]->weight();
+    const float largest = sum.maxComponent();
+    if (weights == Weights::EnergyConserving && largest > 1)
+        for (std::size_t i = 0; i < lobeCount_; ++i)
+            lobes_[i]->scaleWeight(1 / largest);
     float total = 0;
-    for (int i = 0; i < kLobeCount; ++i) {
-        probabilities_[static_cast<std::size_t>(i)] =
-            std::max(0.0f, weights[static_cast<std::size_t>(i)].average());
-        total += probabilities_[static_cast<std::size_t>(i)];
+    for (std::size_t i = 0; i < lobeCount_; ++i) {
+        probabilities_[i] = std::max(0.0f, lobes_[i]->weight().average());
+        total += probabilities_[i];
     }
     for (float& p : probabilities_)
         p = total > 0 ? p / total : 0;
 }
 
 bool Bsdf::hasNonDeltaLobe() const {
-    for (std::size_t i = 0; i < lobes_.size(); ++i)
+    for (std::size_t i = 0; i < lobeCount_; ++i)
         if (probabilities_[i] > 0 && !lobes_[i]->isDelta()) return true;
     return false;
 }
@@ -56,7 +51,7 @@ Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
     if (!reflectsGeometrically(wo, wi)) return Color(0);
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     Color sum;
-    for (std::size_t i = 0; i < lobes_.size(); ++i)
+    for (std::size_t i = 0; i < lobeCount_; ++i)
         if (probabilities_[i] > 0 && !lobes_[i]->isDelta()) sum += lobes_[i]->f(woLocal, wiLocal);
     return sum;
 }
@@ -64,7 +59,7 @@ Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
 float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     float sum = 0;
-    for (std::size_t i = 0; i < lobes_.size(); ++i)
+    for (std::size_t i = 0; i < lobeCount_; ++i)
         if (probabilities_[i] > 0 && !lobes_[i]->isDelta())
             sum += probabilities_[i] * lobes_[i]->pdf(woLocal, wiLocal);
     return sum;
@@ -72,15 +67,15 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
 
 std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, float uLobe, const Vec2& u) const {
     // The lobe whose share of [0, 1) holds uLobe.
-    std::size_t chosen = lobes_.size();
+    std::size_t chosen = lobeCount_;
     float start = 0;
-    for (std::size_t i = 0; i < lobes_.size(); ++i) {
+    for (std::size_t i = 0; i < lobeCount_; ++i) {
         if (probabilities_[i] == 0) continue;
         chosen = i;
         if (uLobe < start + probabilities_[i]) break;
         start += probabilities_[i];
     }
-    if (chosen == lobes_.size()) return std::nullopt;  // a black material
+    if (chosen == lobeCount_) return std::nullopt;  // a black material
     const Vec3 woLocal = frame_.toLocal(wo);
     std::optional<BsdfSample> s = lobes_[chosen]->sample(woLocal, u);
     if (!s) return std::nullopt;
@@ -94,6 +89,61 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, float uLobe, const Vec2& 
     s->pdf = pdf(wo, s->wi);
     if (!(s->pdf > 0)) return std::nullopt;
     return s;
+}
+
+Color Bsdf::localResponse(const Vec3& wo, const Vec3& wi, bool front) const {
+    const Vec3 n = shadingNormal(front);
+    const float cosThetaL = dot(n, wi);
+    if (cosThetaL <= 0) return Color(0);
+    const float cosThetaH = dot(n, normalize(wi + wo));
+    Color sum;
+    for (std::size_t i = 0; i < lobeCount_; ++i)
+        sum += lobes_[i]->localResponse(cosThetaL, cosThetaH);
+    return sum;
+}
+
+std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
+                               std::array<SpecularRay, kMaxSpecularRays>& rays) const {
+    const Vec3 n = shadingNormal(front);
+    const float cosThetaO = std::min(1.0f, std::abs(dot(wo, n)));
+    // Refractions from rays[1] on, behind the reflection's place.
+    Color reflected;
+    std::size_t count = 1;
+    for (std::size_t i = 0; i < lobeCount_; ++i) {
+        if (!lobes_[i]->isDelta()) continue;
+        const SpecularSplit split = lobes_[i]->specularSplit(cosThetaO, front);
+        reflected += split.reflected;
+        if (split.refracted.isBlack()) continue;
+        if (const std::optional<Vec3> refracted = refract(wo, n, split.eta))
+            rays[count++] = {normalize(*refracted), split.refracted};
+    }
+    if (!reflected.isBlack()) {
+        rays[0] = {reflect(wo, n), reflected};
+        return count;
+    }
+    std::copy(rays.begin() + 1, rays.begin() + static_cast<std::ptrdiff_t>(count), rays.begin());
+    return count - 1;
+}
+
+Color Bsdf::diffuseReflectance() const {
+    Color sum;
+    for (std::size_t i = 0; i < lobeCount_; ++i)
+        if (lobes_[i]->isDiffuse()) sum += lobes_[i]->weight();
+    return sum;
+}
+
+bool Bsdf::hasGlossyLobe() const {
+    for (std::size_t i = 0; i < lobeCount_; ++i)
+        if (isGlossy(*lobes_[i])) return true;
+    return false;
+}
+
+Color Bsdf::glossyF(const Vec3& wo, const Vec3& wi) const {
+    const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
+    Color sum;
+    for (std::size_t i = 0; i < lobeCount_; ++i)
+        if (isGlossy(*lobes_[i])) sum += lobes_[i]->f(woLocal, wiLocal);
+    return sum;
 }
 
 }  // namespace lancer

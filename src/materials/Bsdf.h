@@ -1,13 +1,16 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <new>
 #include <optional>
+#include <stdexcept>
+#include <type_traits>
+#include <utility>
 
-#include "materials/BlinnPhongLobe.h"
+#include "materials/BsdfLobe.h"
 #include "materials/BsdfSample.h"
-#include "materials/DielectricLobe.h"
-#include "materials/LambertianLobe.h"
-#include "materials/MirrorLobe.h"
+#include "materials/SpecularRay.h"
 #include "math/Frame.h"
 
 namespace lancer {
@@ -15,11 +18,15 @@ namespace lancer {
 class Material;
 struct Hit;
 
-// How a material scatters light at one hit point, for the path tracer: a Lambertian lobe of
-// albedo kd, a normalized Blinn-Phong lobe from ks and shininess, a mirror kr and a smooth
-// dielectric kt / ior. Energy conservation: when kd + ks + kr + kt exceeds 1 in some channel,
-// all four weights are divided by the largest channel sum, so that no light is created. One lobe
-// is sampled, chosen in proportion to its (scaled) weight averaged over the channels.
+// How a material scatters light at one hit point: the lobes its material adds (at most
+// kMaxLobes), held inline, since the path tracer builds one at every bounce. For the path tracer,
+// energy is conserved: when the lobes' weights sum to more than 1 in some channel, all weights
+// are divided by the largest channel sum, so that no light is created. One lobe is sampled,
+// chosen in proportion to its (scaled) weight averaged over the channels.
+//
+// Whitted and radiosity shade with the scene format's equation instead, from the same lobes with
+// their weights as given: the lobes' local responses lit by the lights, the delta lobes' light
+// traced along specular rays, and (radiosity) the diffuse lobes' albedo and the other lobes' f.
 //
 // Directions are in world space, unit length and point away from the surface. The lobes live in
 // the frame of the shading normal (turned to the front side); light that would cross the
@@ -27,7 +34,24 @@ struct Hit;
 // a smooth-shading normal) is cut.
 class Bsdf {
 public:
-    Bsdf(const Material& material, const Hit& hit);
+    static constexpr std::size_t kMaxLobes = 4;
+    // One reflection (the mirror directions coincide) and a refraction per lobe.
+    static constexpr std::size_t kMaxSpecularRays = kMaxLobes + 1;
+
+    enum class Weights {
+        EnergyConserving,  // the path tracer's
+        AsGiven,           // the scene format's equation (Whitted, radiosity)
+    };
+
+    Bsdf(const Material& material, const Hit& hit, Weights weights = Weights::EnergyConserving);
+    // The lobes point into the object's own storage.
+    Bsdf(const Bsdf&) = delete;
+    Bsdf& operator=(const Bsdf&) = delete;
+
+    // Adds a lobe made from args (Material::addLobes does, while the Bsdf is built); one of
+    // black weight adds nothing.
+    template <class Lobe, class... Args>
+    void add(Args&&... args);
 
     // The sum of the non-delta lobes (delta lobes give 0).
     Color f(const Vec3& wo, const Vec3& wi) const;
@@ -43,23 +67,57 @@ public:
     bool hasNonDeltaLobe() const;
     // The shading normal on the front side.
     const Vec3& shadingNormal() const { return frame_.n; }
+    // The shading normal on the given side of the geometric surface (front: ng's side).
+    Vec3 shadingNormal(bool front) const { return front ? frame_.n : -frame_.n; }
+
+    // Whitted's local model for light arriving from wi, seen from wo on the given side of the
+    // surface: the sum of the lobes' local responses, black for light behind that side's
+    // shading normal.
+    Color localResponse(const Vec3& wo, const Vec3& wi, bool front) const;
+    // The rays Whitted traces from wo on the given side: the delta lobes' reflections about the
+    // shading normal merged into one, then their refractions. Returns how many were written.
+    std::size_t specularRays(const Vec3& wo, bool front,
+                             std::array<SpecularRay, kMaxSpecularRays>& rays) const;
+    // The albedo of the ideal diffuse lobes (f = albedo / pi), which radiosity handles.
+    Color diffuseReflectance() const;
+    // Whether some lobe is neither diffuse nor delta (highlights).
+    bool hasGlossyLobe() const;
+    // The sum of f over the lobes neither diffuse nor delta, without the geometric cut: the
+    // highlights that radiosity adds for the lights, judged by the shading normal alone.
+    Color glossyF(const Vec3& wo, const Vec3& wi) const;
 
 private:
+    // A vtable pointer and up to three colours: room to spare over the lobes of today.
+    static constexpr std::size_t kLobeSize = 48;
+    struct alignas(alignof(std::max_align_t)) LobeStorage {
+        std::byte bytes[kLobeSize];
+    };
+
+    // Divides the weights for energy conservation if asked and sets the lobes' probabilities.
+    void weighLobes(Weights weights);
+
     // Whether wo and wi lie on the sides of the geometric surface that a reflection needs.
     bool reflectsGeometrically(const Vec3& wo, const Vec3& wi) const {
         return dot(wo, ng_) * dot(wi, ng_) > 0;
     }
 
-    static constexpr int kLobeCount = 4;
-
     Frame frame_;
     Vec3 ng_;
-    LambertianLobe lambertian_;
-    BlinnPhongLobe blinnPhong_;
-    MirrorLobe mirror_;
-    DielectricLobe dielectric_;
-    std::array<const BsdfLobe*, kLobeCount> lobes_;
-    std::array<float, kLobeCount> probabilities_{};  // of choosing each lobe; 0 for absent ones
+    std::size_t lobeCount_ = 0;
+    std::array<LobeStorage, kMaxLobes> storage_;
+    std::array<BsdfLobe*, kMaxLobes> lobes_{};
+    std::array<float, kMaxLobes> probabilities_{};  // of choosing each lobe
 };
+
+template <class Lobe, class... Args>
+void Bsdf::add(Args&&... args) {
+    static_assert(std::is_base_of_v<BsdfLobe, Lobe>);
+    static_assert(sizeof(Lobe) <= kLobeSize && alignof(Lobe) <= alignof(LobeStorage),
+                  "the lobe does not fit the Bsdf's storage: raise kLobeSize");
+    static_assert(std::is_trivially_destructible_v<Lobe>, "the Bsdf never destroys its lobes");
+    if (lobeCount_ == kMaxLobes) throw std::length_error("more lobes than Bsdf::kMaxLobes");
+    Lobe* lobe = ::new (storage_[lobeCount_].bytes) Lobe(std::forward<Args>(args)...);
+    if (!lobe->weight().isBlack()) lobes_[lobeCount_++] = lobe;
+}
 
 }  // namespace lancer

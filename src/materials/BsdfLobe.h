@@ -3,23 +3,50 @@
 #include <optional>
 
 #include "materials/BsdfSample.h"
+#include "materials/SpecularSplit.h"
 #include "math/Vec2.h"
 
 namespace lancer {
 
 // One scattering lobe of a BSDF, in the local shading frame: z is the shading normal on the
 // surface's outer (front) side, directions are unit vectors pointing away from the surface.
+//
+// A lobe has a weight, the colour that bounds its albedo (kd, ks, kr, kt), which the Bsdf sums
+// for its energy scale and its choice of lobe. Lobes live in a Bsdf's inline storage, which never
+// destroys them: they must be trivially destructible, hence the protected, non-virtual destructor.
 class BsdfLobe {
 public:
-    virtual ~BsdfLobe() = default;
-
     // A delta lobe (mirror, smooth glass) scatters into single directions: f() and pdf() are 0
     // and only sample() finds them.
     virtual bool isDelta() const = 0;
+    // An ideal diffuse lobe, f = weight / pi: the light radiosity computes.
+    virtual bool isDiffuse() const { return false; }
     virtual Color f(const Vec3& wo, const Vec3& wi) const = 0;
     virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
     // A direction for wo from u in [0,1)^2, or none when the lobe has nothing to give.
     virtual std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const = 0;
+
+    // The classic local model that Whitted shades with, next to the physical f(): the light
+    // reflected towards the viewer per unit of a light's irradiance E_l, for the light at
+    // cosThetaL > 0 from the shading normal on the viewer's side and the half vector of light and
+    // viewer at cosThetaH. Black for delta lobes, whose light Whitted traces instead.
+    virtual Color localResponse(float /*cosThetaL*/, float /*cosThetaH*/) const { return Color(0); }
+    // How a delta lobe splits the light from a viewer at cosThetaO (>= 0) from the shading normal
+    // on its side, on the front side or not (outside). Nothing for other lobes.
+    virtual SpecularSplit specularSplit(float /*cosThetaO*/, bool /*outside*/) const { return {}; }
+
+    const Color& weight() const { return weight_; }
+    // Multiplies the weight by s, for energy conservation.
+    void scaleWeight(float s) { weight_ *= s; }
+
+protected:
+    explicit BsdfLobe(const Color& weight) : weight_(weight) {}
+    BsdfLobe(const BsdfLobe&) = default;
+    BsdfLobe& operator=(const BsdfLobe&) = default;
+    ~BsdfLobe() = default;
+
+private:
+    Color weight_;
 };
 
 }  // namespace lancer

@@ -6,6 +6,12 @@
 
 namespace lancer {
 
+SpecularSplit DielectricLobe::specularSplit(float cosThetaO, bool outside) const {
+    const float eta = outside ? ior_ : 1 / ior_;
+    const float F = fresnelDielectric(cosThetaO, eta);
+    return {weight() * F, weight() * (1 - F), eta};
+}
+
 std::optional<BsdfSample> DielectricLobe::sample(const Vec3& wo, const Vec2& u) const {
     if (wo.z == 0) return std::nullopt;
     const bool outside = wo.z > 0;
@@ -17,7 +23,7 @@ std::optional<BsdfSample> DielectricLobe::sample(const Vec3& wo, const Vec2& u) 
     s.isDelta = true;
     if (u.x < F) {
         s.wi = {-wo.x, -wo.y, wo.z};
-        s.f = weight_ * (F / cosThetaO);
+        s.f = weight() * (F / cosThetaO);
         s.pdf = F;
         return s;
     }
@@ -26,7 +32,7 @@ std::optional<BsdfSample> DielectricLobe::sample(const Vec3& wo, const Vec2& u) 
     if (!refracted) return std::nullopt;  // F = 1 there, so u.x < F always: never reached
     s.wi = normalize(*refracted);
     s.etaSquared = eta * eta;
-    s.f = weight_ * ((1 - F) / (std::abs(s.wi.z) * s.etaSquared));
+    s.f = weight() * ((1 - F) / (std::abs(s.wi.z) * s.etaSquared));
     s.pdf = 1 - F;
     return s;
 }

@@ -11,16 +11,17 @@ namespace lancer {
 // denser medium), as in pbrt and Mitsuba.
 class DielectricLobe final : public BsdfLobe {
 public:
-    DielectricLobe(const Color& weight, float ior) : weight_(weight), ior_(ior) {}
+    DielectricLobe(const Color& weight, float ior) : BsdfLobe(weight), ior_(ior) {}
 
     bool isDelta() const override { return true; }
     Color f(const Vec3&, const Vec3&) const override { return Color(0); }
     float pdf(const Vec3&, const Vec3&) const override { return 0; }
     // u.x chooses between reflection and refraction.
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
+    // kt F reflected, kt (1 - F) refracted (nothing under total internal reflection).
+    SpecularSplit specularSplit(float cosThetaO, bool outside) const override;
 
 private:
-    Color weight_;
     float ior_;
 };
 

@@ -8,7 +8,7 @@ namespace lancer {
 
 Color LambertianLobe::f(const Vec3& wo, const Vec3& wi) const {
     if (wo.z * wi.z <= 0) return Color(0);
-    return albedo_ * (1 / kPi);
+    return weight() * (1 / kPi);
 }
 
 float LambertianLobe::pdf(const Vec3& wo, const Vec3& wi) const {

@@ -8,15 +8,15 @@ namespace lancer {
 // two-sided); sampled by cos(theta).
 class LambertianLobe final : public BsdfLobe {
 public:
-    explicit LambertianLobe(const Color& albedo) : albedo_(albedo) {}
+    explicit LambertianLobe(const Color& albedo) : BsdfLobe(albedo) {}
 
     bool isDelta() const override { return false; }
+    bool isDiffuse() const override { return true; }
     Color f(const Vec3& wo, const Vec3& wi) const override;
     float pdf(const Vec3& wo, const Vec3& wi) const override;
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
-
-private:
-    Color albedo_;
+    // kd cos(theta_L).
+    Color localResponse(float cosThetaL, float) const override { return weight() * cosThetaL; }
 };
 
 }  // namespace lancer

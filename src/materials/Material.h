@@ -1,28 +1,35 @@
 #pragma once
 
-#include <memory>
-
-#include "materials/Texture.h"
 #include "math/Color.h"
 
 namespace lancer {
 
-// A Blinn-Phong material with mirror reflection and refraction: the scene format's material.
-// Its fields are the scene file's keys; the integrators decide how to use them.
+class Bsdf;
+struct Hit;
+
+// How a surface interacts with light: the BSDF its implementation builds at a hit, and the
+// properties that the integrators and the radiosity solver ask for besides the lobes.
 class Material {
 public:
-    Material();
+    virtual ~Material() = default;
 
-    std::shared_ptr<const Texture> diffuse;  // kd
-    std::shared_ptr<const Texture> ambient;  // ka (by default the diffuse texture)
-    Color specular{0};                       // ks
-    float shininess = 32;                    // Blinn-Phong exponent n
-    Color reflection{0};                     // kr
-    Color transmission{0};                   // kt
-    float ior = 1.5f;                        // index of refraction inside the surface
-    Color emission{0};                       // emitted radiance
+    // Adds the lobes of the BSDF at the hit (called while the Bsdf is built).
+    virtual void addLobes(const Hit& hit, Bsdf& bsdf) const = 0;
 
-    bool isTransmissive() const { return !transmission.isBlack(); }
+    // The albedo of the ideal diffuse reflection at the hit (kd): what radiosity spreads.
+    virtual Color diffuseReflectance(const Hit& hit) const = 0;
+    // Whether diffuseReflectance can be other than black anywhere, which decides whether the
+    // radiosity solver meshes the surface.
+    virtual bool reflectsDiffusely() const = 0;
+    // Whitted's ambient coefficient ka at the hit, which multiplies the scene's ambient light.
+    virtual Color ambientReflectance(const Hit& hit) const { return diffuseReflectance(hit); }
+    // The radiance emitted, uniformly over the surface.
+    virtual Color emission() const { return Color(0); }
+    // The fraction kt of light that passes straight through (what shadow rays through glass
+    // keep); black for an opaque material.
+    virtual Color transmission() const { return Color(0); }
+
+    bool isTransmissive() const { return !transmission().isBlack(); }
 };
 
 }  // namespace lancer

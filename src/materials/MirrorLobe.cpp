@@ -8,7 +8,7 @@ std::optional<BsdfSample> MirrorLobe::sample(const Vec3& wo, const Vec2&) const 
     if (wo.z == 0) return std::nullopt;
     BsdfSample s;
     s.wi = {-wo.x, -wo.y, wo.z};
-    s.f = reflectance_ / std::abs(wo.z);
+    s.f = weight() / std::abs(wo.z);
     s.pdf = 1;
     s.isDelta = true;
     return s;

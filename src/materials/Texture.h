@@ -10,6 +10,8 @@ class Texture {
 public:
     virtual ~Texture() = default;
     virtual Color evaluate(const Hit& hit) const = 0;
+    // Whether it is black everywhere, as far as the texture can tell without looking.
+    virtual bool isBlack() const { return false; }
 };
 
 }  // namespace lancer

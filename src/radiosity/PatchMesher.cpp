@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "geometry/Shape.h"
-#include "materials/ConstantTexture.h"
 #include "materials/Material.h"
 #include "radiosity/SurfaceProbe.h"
 #include "scene/Scene.h"
@@ -15,9 +14,7 @@ namespace {
 
 // Whether a material takes part in radiosity: it reflects diffusely or it emits.
 bool isMeshed(const Material& m) {
-    const bool diffuse = !dynamic_cast<const ConstantTexture*>(m.diffuse.get()) ||
-                         !m.diffuse->evaluate(Hit{}).isBlack();
-    return diffuse || !m.emission.isBlack();
+    return m.reflectsDiffusely() || !m.emission().isBlack();
 }
 
 float longestEdge(const std::array<Vec3, 3>& t) {
@@ -81,8 +78,8 @@ void PatchMesher::addSurfaceTriangle(RadiosityMesh& mesh, const std::array<Vec3,
         patch.material = source.material;
         patch.curved = source.curved;
         patch.probeDistance = source.curved ? source.probeDistance : 1e-3f * std::sqrt(patch.area);
-        patch.emission[0] = material.emission;
-        patch.emission[1] = source.emitsOnBothSides ? material.emission : Color(0);
+        patch.emission[0] = material.emission();
+        patch.emission[1] = source.emitsOnBothSides ? material.emission() : Color(0);
         // An area light's own surface: its light shoots from the light source instead.
         if (source.surface->areaLight()) patch.emission = {};
         const auto index = static_cast<std::uint32_t>(mesh.patches.size());

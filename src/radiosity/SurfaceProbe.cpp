@@ -39,11 +39,11 @@ Color SurfaceProbe::reflectance(const Patch& patch, const std::array<Vec3, 3>& c
     for (const Vec3& p : points) {
         const std::optional<Hit> hit = at(patch, p);
         if (hit) {
-            sum += hit->material->diffuse->evaluate(*hit);
+            sum += hit->material->diffuseReflectance(*hit);
         } else {
             Hit fallback;  // uv (0, 0): only textures see the difference
             fallback.p = p;
-            sum += patch.material->diffuse->evaluate(fallback);
+            sum += patch.material->diffuseReflectance(fallback);
         }
     }
     return sum / 4.0f;

@@ -79,7 +79,7 @@ Color Scene::transmittance(const Hit& from, const LightSample& light,
         ++rayCount;
         const std::optional<Hit> blocker = intersect(ray, tMax);
         if (!blocker) return visibility;
-        visibility *= blocker->material->transmission;
+        visibility *= blocker->material->transmission();
         if (visibility.isBlack()) return visibility;
         surface = *blocker;
     }

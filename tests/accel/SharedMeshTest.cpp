@@ -33,8 +33,8 @@
 #include "geometry/Triangle.h"
 #include "geometry/TriangleMesh.h"
 #include "io/ObjLoader.h"
+#include "materials/BlinnPhongMaterial.h"
 #include "materials/ConstantTexture.h"
-#include "materials/Material.h"
 #include "math/Transform.h"
 
 namespace lancer::test {
@@ -123,7 +123,7 @@ private:
         mesh.materials.clear();
         mesh.faceMaterials.clear();
         for (std::uint32_t i = 0; i < mesh.triangleCount(); ++i) {
-            auto material = std::make_shared<const Material>();
+            auto material = std::make_shared<const BlinnPhongMaterial>();
             triangleOf[material.get()] = i;
             mesh.materials.push_back(std::move(material));
             mesh.faceMaterials.push_back(i);

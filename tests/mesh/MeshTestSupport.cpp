@@ -94,8 +94,12 @@ double polygonArea(const std::vector<Vec3>& corners) {
     return 0.5 * length(sum);
 }
 
-const Material& materialOf(const TriangleMesh& mesh, std::size_t triangle) {
-    return *mesh.materials.at(mesh.faceMaterials.at(triangle));
+const BlinnPhongMaterial::Parameters& parametersOf(const Material& material) {
+    return dynamic_cast<const BlinnPhongMaterial&>(material).parameters();
+}
+
+const BlinnPhongMaterial::Parameters& materialOf(const TriangleMesh& mesh, std::size_t triangle) {
+    return parametersOf(*mesh.materials.at(mesh.faceMaterials.at(triangle)));
 }
 
 Color colorOf(const Texture& texture) {

@@ -12,7 +12,7 @@
 
 #include "geometry/TriangleMesh.h"
 #include "io/ObjLoader.h"
-#include "materials/Material.h"
+#include "materials/BlinnPhongMaterial.h"
 #include "math/Color.h"
 
 namespace lancer::test {
@@ -66,7 +66,9 @@ Vec3 areaVector(const TriangleMesh& mesh, std::size_t triangle);
 double totalArea(const TriangleMesh& mesh);
 // Half the length of the sum of (p_i x p_i+1) over a polygon's edges: the area of a planar polygon.
 double polygonArea(const std::vector<Vec3>& corners);
-const Material& materialOf(const TriangleMesh& mesh, std::size_t triangle);
+// The parameters of a material the OBJ loader made (a BlinnPhongMaterial, which it checks).
+const BlinnPhongMaterial::Parameters& parametersOf(const Material& material);
+const BlinnPhongMaterial::Parameters& materialOf(const TriangleMesh& mesh, std::size_t triangle);
 // The colour of a texture that does not vary (a ConstantTexture).
 Color colorOf(const Texture& texture);
 

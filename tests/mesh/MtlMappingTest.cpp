@@ -18,7 +18,7 @@ protected:
     }
 
     // One material "m" from these MTL lines, as the first triangle has it; no warnings expected.
-    Material loadMaterial(const std::string& lines) {
+    BlinnPhongMaterial::Parameters loadMaterial(const std::string& lines) {
         const LoadedObj loaded = loadWithMaterials("newmtl m\n" + lines, {"m"});
         EXPECT_TRUE(loaded.warnings.empty()) << loaded.warnings.front();
         return materialOf(*loaded.mesh, 0);
@@ -39,20 +39,22 @@ protected:
 };
 
 TEST_F(MtlTest, KdIsTheDiffuseColourAndTheAmbientToo) {
-    const Material material = loadMaterial("Kd 0.1 0.2 0.3\n");
+    const BlinnPhongMaterial::Parameters material = loadMaterial("Kd 0.1 0.2 0.3\n");
     EXPECT_COLOR_NEAR(colorOf(*material.diffuse), Color(0.1f, 0.2f, 0.3f), 0);
     EXPECT_EQ(material.ambient, material.diffuse);
 }
 
 TEST_F(MtlTest, KaIsTheAmbientColourUnlessBlack) {
-    const Material material = loadMaterial("Kd 0.1 0.2 0.3\nKa 0.4 0.5 0.6\n");
+    const BlinnPhongMaterial::Parameters material =
+        loadMaterial("Kd 0.1 0.2 0.3\nKa 0.4 0.5 0.6\n");
     EXPECT_COLOR_NEAR(colorOf(*material.ambient), Color(0.4f, 0.5f, 0.6f), 0);
-    const Material black = loadMaterial("Kd 0.1 0.2 0.3\nKa 0 0 0\n");
+    const BlinnPhongMaterial::Parameters black = loadMaterial("Kd 0.1 0.2 0.3\nKa 0 0 0\n");
     EXPECT_EQ(black.ambient, black.diffuse);
 }
 
 TEST_F(MtlTest, KsAndNsAreTheHighlight) {
-    const Material material = loadMaterial("Ks 0.5 0.6 0.7\nNs 80\nillum 2\n");
+    const BlinnPhongMaterial::Parameters material =
+        loadMaterial("Ks 0.5 0.6 0.7\nNs 80\nillum 2\n");
     EXPECT_EQ(material.specular, Color(0.5f, 0.6f, 0.7f));
     EXPECT_EQ(material.shininess, 80);
     EXPECT_TRUE(material.reflection.isBlack());
@@ -63,7 +65,7 @@ TEST_F(MtlTest, NiIsTheIor) {
 }
 
 TEST_F(MtlTest, DissolveLetsLightThroughWithoutBendingIt) {
-    const Material material = loadMaterial("Ni 1.5\nd 0.25\n");
+    const BlinnPhongMaterial::Parameters material = loadMaterial("Ni 1.5\nd 0.25\n");
     EXPECT_EQ(material.transmission, Color(0.75f));
     EXPECT_EQ(material.ior, 1);
 }
@@ -83,15 +85,16 @@ TEST_F(MtlTest, KeIsTheEmission) {
 
 TEST_F(MtlTest, MapKdIsTheDiffuseAndAmbientTexture) {
     folder_.write("wood.png", "");
-    const Material material = loadMaterial("Kd 0.2 0.2 0.2\nmap_Kd -s 2 2 1 -o 0.5 0 0 wood.png\n");
+    const BlinnPhongMaterial::Parameters material =
+        loadMaterial("Kd 0.2 0.2 0.2\nmap_Kd -s 2 2 1 -o 0.5 0 0 wood.png\n");
     EXPECT_EQ(textures_.requested(), std::vector<fs::path>{folder_.path() / "wood.png"});
     EXPECT_EQ(colorOf(*material.diffuse), FakeTextures::kColor);
     EXPECT_EQ(material.ambient, material.diffuse);
 }
 
 TEST_F(MtlTest, KeysLeftOutTakeTheSceneFormatDefaults) {
-    const Material material = loadMaterial("");
-    const Material defaults;
+    const BlinnPhongMaterial::Parameters material = loadMaterial("");
+    const BlinnPhongMaterial::Parameters defaults;
     EXPECT_EQ(colorOf(*material.diffuse), colorOf(*defaults.diffuse));
     EXPECT_EQ(material.ambient, material.diffuse);
     EXPECT_EQ(material.specular, defaults.specular);
@@ -114,7 +117,7 @@ class IllumTest : public MtlTest, public ::testing::WithParamInterface<IllumCase
 TEST_P(IllumTest, MapsOntoOurMaterial) {
     const IllumCase& c = GetParam();
     const Color kd(0.5f, 0.4f, 0.3f), ks(0.2f, 0.3f, 0.4f), ke(0.1f, 0, 0);
-    const Material material = loadMaterial(
+    const BlinnPhongMaterial::Parameters material = loadMaterial(
         "Kd 0.5 0.4 0.3\nKs 0.2 0.3 0.4\nKe 0.1 0 0\nNs 50\n"
         "Ni 1.7\nillum " +
         std::to_string(c.illum) + "\n");
@@ -146,7 +149,7 @@ INSTANTIATE_TEST_SUITE_P(EveryModel, IllumTest,
                          });
 
 TEST_F(MtlTest, GlassIsClearWhateverItsDissolve) {
-    const Material material = loadMaterial("Ni 2.5\nd 0.5\nillum 7\n");
+    const BlinnPhongMaterial::Parameters material = loadMaterial("Ni 2.5\nd 0.5\nillum 7\n");
     EXPECT_EQ(material.transmission, Color(1));
     EXPECT_FLOAT_EQ(material.ior, 2.5f);
 }
@@ -195,7 +198,8 @@ TEST_F(MtlTest, FacesWithoutMaterialGetTheDefault) {
                                        "f 1 2 3\nusemtl red\nf 1 3 2\n");
     const LoadedObj loaded = loadObj(obj);
     EXPECT_TRUE(loaded.warnings.empty());
-    EXPECT_EQ(colorOf(*materialOf(*loaded.mesh, 0).diffuse), colorOf(*Material().diffuse));
+    EXPECT_EQ(colorOf(*materialOf(*loaded.mesh, 0).diffuse),
+              colorOf(*BlinnPhongMaterial::Parameters().diffuse));
     EXPECT_EQ(colorOf(*materialOf(*loaded.mesh, 1).diffuse), Color(1, 0, 0));
 }
 
@@ -211,7 +215,8 @@ TEST_F(MtlTest, MissingMtlFileGivesOneWarningNamingItAndTheDefaultMaterial) {
                                        "\" not found; the default grey material is used for its "
                                        "materials"});
     ASSERT_EQ(loaded.mesh->materials.size(), 1u);
-    EXPECT_EQ(colorOf(*loaded.mesh->materials[0]->diffuse), colorOf(*Material().diffuse));
+    EXPECT_EQ(colorOf(*parametersOf(*loaded.mesh->materials[0]).diffuse),
+              colorOf(*BlinnPhongMaterial::Parameters().diffuse));
 }
 
 TEST_F(MtlTest, UsemtlWithoutMtllibGivesOneWarning) {
@@ -229,7 +234,8 @@ TEST_F(MtlTest, UndefinedMaterialGivesOneWarningNamingIt) {
         loadWithMaterials("newmtl red\nKd 1 0 0\n", {"red", "nosuch", "nosuch"});
     ASSERT_EQ(loaded.warnings.size(), 1u);
     EXPECT_EQ(countContaining(loaded.warnings, "materials \"nosuch\" are not defined"), 1u);
-    EXPECT_EQ(colorOf(*materialOf(*loaded.mesh, 1).diffuse), colorOf(*Material().diffuse));
+    EXPECT_EQ(colorOf(*materialOf(*loaded.mesh, 1).diffuse),
+              colorOf(*BlinnPhongMaterial::Parameters().diffuse));
 }
 
 TEST_F(MtlTest, MissingTextureGivesOneWarningNamingItAndKeepsKd) {
@@ -250,14 +256,15 @@ TEST_F(MtlTest, MissingTextureGivesOneWarningNamingItAndKeepsKd) {
 
 TEST_F(MtlTest, WindowsPathsInMapKdAreReadWithSlashes) {
     folder_.write("textures/wood.png", "");
-    const Material material = loadMaterial("map_Kd .\\textures\\wood.png\n");
+    const BlinnPhongMaterial::Parameters material = loadMaterial("map_Kd .\\textures\\wood.png\n");
     EXPECT_EQ(textures_.requested(), std::vector<fs::path>{folder_.path() / "textures/wood.png"});
     EXPECT_EQ(colorOf(*material.diffuse), FakeTextures::kColor);
 }
 
 TEST_F(MtlTest, AbsolutePathOfAnotherMachineFallsBackToTheFileBesideTheMtl) {
     folder_.write("wood.png", "");
-    const Material material = loadMaterial("map_Kd C:\\Users\\someone\\models\\wood.png\n");
+    const BlinnPhongMaterial::Parameters material =
+        loadMaterial("map_Kd C:\\Users\\someone\\models\\wood.png\n");
     EXPECT_EQ(textures_.requested(), std::vector<fs::path>{folder_.path() / "wood.png"});
     EXPECT_EQ(colorOf(*material.diffuse), FakeTextures::kColor);
 }

@@ -13,9 +13,10 @@ namespace {
 namespace fs = std::filesystem;
 
 // The mesh's materials by the diffuse colour that tells them apart in the Cornell box files.
-const Material* findByDiffuse(const TriangleMesh& mesh, const Color& diffuse) {
+const BlinnPhongMaterial::Parameters* findByDiffuse(const TriangleMesh& mesh,
+                                                    const Color& diffuse) {
     for (const auto& material : mesh.materials)
-        if (colorOf(*material->diffuse) == diffuse) return material.get();
+        if (colorOf(*parametersOf(*material).diffuse) == diffuse) return &parametersOf(*material);
     return nullptr;
 }
 
@@ -30,14 +31,15 @@ TEST(CornellBox, OriginalHas36TrianglesAndAnEmissiveLightFacingDown) {
     EXPECT_EQ(mesh.materials.size(), 8u);
     std::size_t lightTriangles = 0;
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const Material& material = materialOf(mesh, t);
+        const BlinnPhongMaterial::Parameters& material = materialOf(mesh, t);
         if (material.emission.isBlack()) continue;
         ++lightTriangles;
         EXPECT_EQ(material.emission, Color(17, 12, 4));
         EXPECT_LT(areaVector(mesh, t).y, 0) << "the light emits on its front side, downwards";
     }
     EXPECT_EQ(lightTriangles, 2u);
-    const Material* leftWall = findByDiffuse(mesh, Color(0.63f, 0.065f, 0.05f));
+    const BlinnPhongMaterial::Parameters* leftWall =
+        findByDiffuse(mesh, Color(0.63f, 0.065f, 0.05f));
     ASSERT_NE(leftWall, nullptr);
     EXPECT_TRUE(leftWall->specular.isBlack());
     EXPECT_TRUE(leftWall->emission.isBlack());
@@ -62,15 +64,16 @@ TEST(CornellBox, SphereBoxHasAMirrorSphereAndAGlassSphereWithNormalsAndUvs) {
     const Material* mirror = nullptr;
     const Material* glass = nullptr;
     for (const auto& material : mesh.materials) {
-        if (material->reflection == Color(0.95f)) mirror = material.get();
+        if (parametersOf(*material).reflection == Color(0.95f)) mirror = material.get();
         if (material->isTransmissive()) glass = material.get();
     }
     ASSERT_NE(mirror, nullptr) << "leftSphere, illum 5";
     EXPECT_FALSE(mirror->isTransmissive());
     ASSERT_NE(glass, nullptr) << "rightSphere, illum 7";
-    EXPECT_EQ(glass->transmission, Color(1));
-    EXPECT_FLOAT_EQ(glass->ior, 2.5f);
-    EXPECT_TRUE(glass->reflection.isBlack()) << "its reflection is the Fresnel share of kt";
+    EXPECT_EQ(glass->transmission(), Color(1));
+    EXPECT_FLOAT_EQ(parametersOf(*glass).ior, 2.5f);
+    EXPECT_TRUE(parametersOf(*glass).reflection.isBlack())
+        << "its reflection is the Fresnel share of kt";
 }
 
 TEST(LowResBunny, Has6598TrianglesWithUnitNormals) {

@@ -250,7 +250,8 @@ TEST(ObjLineEndings, CrlfFilesReadLikeLfFiles) {
     EXPECT_EQ(loaded.mesh->uvs, expected.mesh->uvs);
     EXPECT_EQ(loaded.mesh->indices, expected.mesh->indices);
     ASSERT_EQ(loaded.mesh->materials.size(), 1u);
-    EXPECT_COLOR_NEAR(colorOf(*loaded.mesh->materials[0]->diffuse), Color(0.8f, 0.1f, 0.1f), 0);
+    EXPECT_COLOR_NEAR(colorOf(*parametersOf(*loaded.mesh->materials[0]).diffuse),
+                      Color(0.8f, 0.1f, 0.1f), 0);
 }
 
 TEST(ObjAttributes, NormalsAreUnitAndUvsAsGivenWherePresent) {

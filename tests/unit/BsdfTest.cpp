@@ -1,11 +1,13 @@
 // The path tracer's BSDF, lobe by lobe and as a whole: the directions each lobe samples follow the
 // density its pdf() states (a chi-square test over a (theta, phi) grid, as in pbrt-v3's bsdfs test
 // and Mitsuba's chi2 module), the Blinn-Phong lobe never reflects more than it receives (a white
-// furnace, numerically integrated), reflection is reciprocal, and glass conserves energy.
+// furnace, numerically integrated), reflection is reciprocal, and glass conserves energy; and
+// Whitted's local model and specular rays, from the same lobes.
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -17,11 +19,11 @@
 
 #include "geometry/Hit.h"
 #include "materials/BlinnPhongLobe.h"
+#include "materials/BlinnPhongMaterial.h"
 #include "materials/Bsdf.h"
 #include "materials/ConstantTexture.h"
 #include "materials/DielectricLobe.h"
 #include "materials/LambertianLobe.h"
-#include "materials/Material.h"
 #include "materials/MirrorLobe.h"
 #include "materials/Optics.h"
 #include "math/Float.h"
@@ -211,17 +213,24 @@ INSTANTIATE_TEST_SUITE_P(
 // A material made of the given weights, seen at a hit whose normals are +z (or the shading normal
 // tilted away from the geometric one by `tiltDegrees`).
 struct MaterialAtHit {
-    Material material;
+    BlinnPhongMaterial material;
     Hit hit;
 
-    MaterialAtHit(float kd, float ks, float shininess, float kr, float kt, float tiltDegrees = 0) {
-        material.diffuse = std::make_shared<ConstantTexture>(Color(kd));
-        material.specular = Color(ks);
-        material.shininess = shininess;
-        material.reflection = Color(kr);
-        material.transmission = Color(kt);
+    MaterialAtHit(float kd, float ks, float shininess, float kr, float kt, float tiltDegrees = 0)
+        : material(weights(kd, ks, shininess, kr, kt)) {
         hit.ng = Vec3(0, 0, 1);
         hit.ns = direction(tiltDegrees, 0);
+    }
+
+    static BlinnPhongMaterial::Parameters weights(float kd, float ks, float shininess, float kr,
+                                                  float kt) {
+        BlinnPhongMaterial::Parameters p;
+        p.diffuse = std::make_shared<ConstantTexture>(Color(kd));
+        p.specular = Color(ks);
+        p.shininess = shininess;
+        p.reflection = Color(kr);
+        p.transmission = Color(kt);
+        return p;
     }
 };
 
@@ -420,6 +429,62 @@ TEST(Bsdf, NoReflectionThroughTheGeometricSurface) {
             EXPECT_GT(s->wi.z, 0);
         }
     }
+}
+
+// Whitted's local model, from the lobes with their weights as given (kd + ks above 1 is not
+// scaled): kd max(0, n.L) + ks max(0, n.h)^n, nothing for light behind the viewer's side.
+TEST(Bsdf, LocalResponseIsTheSceneFormatsEquation) {
+    const MaterialAtHit m(0.7f, 0.6f, 20, 0.3f, 0);
+    const Bsdf bsdf(m.material, m.hit, Bsdf::Weights::AsGiven);
+    const Vec3 wo = direction(30, 0), wi = direction(50, 160);
+    const float cosL = wi.z, cosH = normalize(wo + wi).z;
+    const Color expected = Color(0.7f) * cosL + Color(0.6f) * std::pow(cosH, 20.0f);
+    EXPECT_NEAR(bsdf.localResponse(wo, wi, true).g, expected.g, 1e-6f);
+    EXPECT_TRUE(bsdf.localResponse(wo, direction(100, 0), true).isBlack());
+    // Seen from the back side, the model is mirrored.
+    const auto mirrored = [](const Vec3& v) { return Vec3(v.x, v.y, -v.z); };
+    EXPECT_NEAR(bsdf.localResponse(mirrored(wo), mirrored(wi), false).g, expected.g, 1e-6f);
+    EXPECT_NEAR(bsdf.diffuseReflectance().r, 0.7f, 0);
+    EXPECT_TRUE(bsdf.hasGlossyLobe());
+}
+
+// A mirror and glass: one reflected ray of kr + kt F, one refracted ray of kt (1 - F) along
+// Snell's direction; under total internal reflection, the reflection alone with kr + kt.
+TEST(Bsdf, SpecularRaysMergeTheReflectionsAndSplitGlassByFresnel) {
+    const MaterialAtHit m(0, 0, 20, 0.25f, 0.5f);
+    const Bsdf bsdf(m.material, m.hit, Bsdf::Weights::AsGiven);
+    EXPECT_FALSE(bsdf.hasGlossyLobe());
+    std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
+    const Vec3 wo = direction(40, 10);
+    const float F = fresnelDielectric(wo.z, 1.5f);
+    ASSERT_EQ(bsdf.specularRays(wo, true, rays), 2u);
+    EXPECT_NEAR(rays[0].direction.z, wo.z, 1e-6f);
+    EXPECT_NEAR(rays[0].direction.x, -wo.x, 1e-6f);
+    EXPECT_NEAR(rays[0].weight.r, 0.25f + 0.5f * F, 1e-6f);
+    EXPECT_NEAR(rays[1].weight.r, 0.5f * (1 - F), 1e-6f);
+    EXPECT_LT(rays[1].direction.z, 0);
+    EXPECT_NEAR(std::sqrt(1 - rays[1].direction.z * rays[1].direction.z),
+                std::sqrt(1 - wo.z * wo.z) / 1.5f, 1e-5f);
+    // From inside the glass, beyond the critical angle.
+    const Vec3 inside = direction(135, 0);
+    ASSERT_EQ(bsdf.specularRays(inside, false, rays), 1u);
+    EXPECT_NEAR(rays[0].direction.z, inside.z, 1e-6f);
+    EXPECT_NEAR(rays[0].weight.r, 0.75f, 1e-6f);
+}
+
+// Glass alone, with no mirror: the reflection is its Fresnel share, ahead of the refraction.
+TEST(Bsdf, SpecularRaysOfGlassAloneStartWithItsReflection) {
+    const MaterialAtHit m(0.5f, 0, 20, 0, 1);
+    const Bsdf bsdf(m.material, m.hit, Bsdf::Weights::AsGiven);
+    std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
+    const Vec3 wo = direction(0, 0);
+    ASSERT_EQ(bsdf.specularRays(wo, true, rays), 2u);
+    EXPECT_NEAR(rays[0].weight.r, fresnelDielectric(1, 1.5f), 1e-6f);
+    EXPECT_NEAR(rays[1].direction.z, -1, 1e-6f);
+    // A diffuse material alone traces nothing.
+    const MaterialAtHit matte(0.5f, 0, 20, 0, 0);
+    EXPECT_EQ(Bsdf(matte.material, matte.hit, Bsdf::Weights::AsGiven).specularRays(wo, true, rays),
+              0u);
 }
 
 }  // namespace

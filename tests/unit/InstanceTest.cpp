@@ -10,7 +10,7 @@
 #include "geometry/Instance.h"
 #include "geometry/Sphere.h"
 #include "geometry/Triangle.h"
-#include "materials/Material.h"
+#include "materials/BlinnPhongMaterial.h"
 
 namespace lancer {
 namespace {
@@ -20,7 +20,7 @@ constexpr float kPi2 = 6.2831853f;
 // A unit sphere stretched into an ellipsoid with semi-axes (3, 1, 0.5) centred at (2, 0, 0).
 class EllipsoidTest : public ::testing::Test {
 protected:
-    Material material;
+    BlinnPhongMaterial material;
     Vec3 semiAxes{3, 1, 0.5f};
     Vec3 center{2, 0, 0};
     Instance ellipsoid{std::make_shared<Sphere>(Vec3(0), 1.0f, &material),
@@ -68,7 +68,7 @@ TEST_F(EllipsoidTest, BoundsEncloseTheEllipsoid) {
 }
 
 TEST(InstanceTest, SpawnedRaysNeverFindTheSurfaceTheyLeave) {
-    Material material;
+    BlinnPhongMaterial material;
     // Far from the origin and non-uniformly scaled: the transforms add rounding error of their own.
     const Instance instance(std::make_shared<Sphere>(Vec3(0), 1.0f, &material),
                             Transform::translate({1e4f, -2e3f, 5e3f}) *
@@ -91,7 +91,7 @@ TEST(InstanceTest, SpawnedRaysNeverFindTheSurfaceTheyLeave) {
 }
 
 TEST(InstanceTest, MaterialOverrideReplacesTheShapesMaterial) {
-    Material own, replacement;
+    BlinnPhongMaterial own, replacement;
     const Instance plain(std::make_shared<Sphere>(Vec3(0), 1.0f, &own), Transform());
     const Instance overridden(std::make_shared<Sphere>(Vec3(0), 1.0f, &own), Transform(),
                               &replacement);
@@ -103,7 +103,7 @@ TEST(InstanceTest, MaterialOverrideReplacesTheShapesMaterial) {
 }
 
 TEST(InstanceTest, TransformedTriangleMatchesATriangleMadeOfTransformedVertices) {
-    Material material;
+    BlinnPhongMaterial material;
     const std::array<Vec3, 3> vertices{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
     const Transform t = Transform::translate({3, 1, -2}) * Transform::rotate(50, {1, 1, 1}) *
                         Transform::scale({2, 0.5f, 1});
@@ -130,7 +130,7 @@ TEST(InstanceTest, TransformedTriangleMatchesATriangleMadeOfTransformedVertices)
 }
 
 TEST(InstanceTest, OcclusionAgreesWithIntersection) {
-    Material material;
+    BlinnPhongMaterial material;
     const Instance instance(std::make_shared<Sphere>(Vec3(0), 1.0f, &material),
                             Transform::translate({0, 0, -5}) * Transform::scale({2, 1, 1}));
     Hit hit;

@@ -12,6 +12,7 @@
 #include "io/SceneLoader.h"
 #include "lights/AreaLight.h"
 #include "lights/SpotLight.h"
+#include "materials/BlinnPhongMaterial.h"
 
 namespace lancer {
 namespace {
@@ -40,10 +41,11 @@ TEST(LightLoaderTest, AQuadLightIsAVisibleSurfaceLinkedToItsLight) {
     Hit hit;
     ASSERT_TRUE(test::intersectInto(scene, {Vec3(0.5f, 0.5f, 5), Vec3(0, 0, -1)}, kInfinity, hit));
     EXPECT_EQ(hit.shape->areaLight(), light);
-    EXPECT_EQ(hit.material->emission, Color(1, 2, 3));
-    EXPECT_TRUE(hit.material->diffuse->evaluate(hit).isBlack());
-    EXPECT_TRUE(hit.material->ambient->evaluate(hit).isBlack());
-    EXPECT_TRUE(hit.material->specular.isBlack());
+    EXPECT_EQ(hit.material->emission(), Color(1, 2, 3));
+    EXPECT_TRUE(hit.material->diffuseReflectance(hit).isBlack());
+    EXPECT_TRUE(hit.material->ambientReflectance(hit).isBlack());
+    EXPECT_TRUE(
+        dynamic_cast<const BlinnPhongMaterial&>(*hit.material).parameters().specular.isBlack());
     EXPECT_FALSE(hit.shape->emitsOnBothSides());
 }
 
@@ -59,8 +61,8 @@ TEST(LightLoaderTest, ASphereLightIsAVisibleSphereLinkedToItsLight) {
     ASSERT_TRUE(test::intersectInto(scene, {Vec3(0, 0, 5), Vec3(0, 0, -1)}, kInfinity, hit));
     EXPECT_EQ(hit.t, 5.5f);
     EXPECT_EQ(hit.shape->areaLight(), light);
-    EXPECT_EQ(hit.material->emission, Color(7));
-    EXPECT_TRUE(hit.material->diffuse->evaluate(hit).isBlack());
+    EXPECT_EQ(hit.material->emission(), Color(7));
+    EXPECT_TRUE(hit.material->diffuseReflectance(hit).isBlack());
 }
 
 TEST(LightLoaderTest, ASpotLightAimsAlongItsDirectionOrAtItsLookAtPoint) {

@@ -8,6 +8,7 @@
 
 #include "IntersectInto.h"
 #include "io/SceneLoader.h"
+#include "materials/Material.h"
 #include "scene/InputError.h"
 
 namespace lancer {
@@ -132,8 +133,8 @@ TEST_F(SceneMeshTest, MeshMaterialReplacesTheModelsOwn) {
     Hit a, b;
     ASSERT_TRUE(test::intersectInto(own, {{0, 0, 5}, {0, 0, -1}}, kInfinity, a));
     ASSERT_TRUE(test::intersectInto(replaced, {{0, 0, 5}, {0, 0, -1}}, kInfinity, b));
-    EXPECT_EQ(a.material->diffuse->evaluate(a), Color(1, 0, 0));
-    EXPECT_EQ(b.material->diffuse->evaluate(b), Color(0, 0, 1));
+    EXPECT_EQ(a.material->diffuseReflectance(a), Color(1, 0, 0));
+    EXPECT_EQ(b.material->diffuseReflectance(b), Color(0, 0, 1));
 }
 
 struct BadInput {

@@ -18,7 +18,7 @@
 #include "geometry/Quad.h"
 #include "geometry/Sphere.h"
 #include "geometry/Triangle.h"
-#include "materials/Material.h"
+#include "materials/BlinnPhongMaterial.h"
 #include "math/Transform.h"
 
 namespace lancer {
@@ -26,7 +26,7 @@ namespace {
 
 using test::Random;
 
-const Material kMaterial;
+const BlinnPhongMaterial kMaterial;
 
 struct ShapeCase {
     std::string name;

@@ -1,0 +1,44 @@
+#pragma once
+
+#include <memory>
+
+#include "materials/ConstantTexture.h"
+#include "materials/Material.h"
+
+namespace lancer {
+
+// The scene format's material: Blinn-Phong with mirror reflection and refraction. Its BSDF is a
+// Lambertian lobe kd, a normalized Blinn-Phong lobe ks and shininess, a mirror kr and a smooth
+// dielectric kt / ior, whose local responses and specular rays give Whitted's equation.
+class BlinnPhongMaterial final : public Material {
+public:
+    // The scene file's keys.
+    struct Parameters {
+        std::shared_ptr<const Texture> diffuse =
+            std::make_shared<ConstantTexture>(Color(0.8f));  // kd
+        std::shared_ptr<const Texture> ambient = diffuse;    // ka (by default the diffuse texture)
+        Color specular{0};                                   // ks
+        float shininess = 32;                                // Blinn-Phong exponent n
+        Color reflection{0};                                 // kr
+        Color transmission{0};                               // kt
+        float ior = 1.5f;                                    // index of refraction inside
+        Color emission{0};                                   // emitted radiance
+    };
+
+    BlinnPhongMaterial() = default;
+    explicit BlinnPhongMaterial(Parameters parameters);
+
+    void addLobes(const Hit& hit, Bsdf& bsdf) const override;
+    Color diffuseReflectance(const Hit& hit) const override;
+    bool reflectsDiffusely() const override;
+    Color ambientReflectance(const Hit& hit) const override;
+    Color emission() const override { return parameters_.emission; }
+    Color transmission() const override { return parameters_.transmission; }
+
+    const Parameters& parameters() const { return parameters_; }
+
+private:
+    Parameters parameters_;
+};
+
+}  // namespace lancer
