@@ -4,9 +4,11 @@
 #include <cmath>
 
 #include "materials/Bsdf.h"
+#include "geometry/Shape.h"
 #include "materials/Material.h"
 #include "sampling/Sampler.h"
 #include "scene/Scene.h"
+#include "scene/ShadowRays.h"
 
 namespace lancer {
 
@@ -41,9 +43,7 @@ Color PathIntegrator::sampleOneLight(const Hit& hit, const Bsdf& bsdf, const Vec
     const Color f = bsdf.f(wo, ls.wi);
     if (f.isBlack()) return Color(0);
     // Shadow rays stop at the first surface: light through glass arrives by refracted paths.
-    const Ray shadow = ls.atInfinity ? hit.spawnRay(ls.wi) : hit.spawnRayTo(ls.position);
-    ++rayCount;
-    if (scene_.occluded(shadow, ls.atInfinity ? kInfinity : 1 - kShadowEpsilon)) return Color(0);
+    if (!ShadowRays::unoccluded(scene_, hit, ls, rayCount)) return Color(0);
     const float weight =
         delta ? 1 : powerHeuristic(choice->probability * ls.pdf, bsdf.pdf(wo, ls.wi));
     const float cosine = std::abs(dot(ls.wi, bsdf.shadingNormal()));

@@ -10,6 +10,7 @@
 #include "sampling/Sampler.h"
 #include "sampling/Sampling.h"
 #include "scene/Scene.h"
+#include "scene/ShadowRays.h"
 
 namespace lancer {
 
@@ -65,7 +66,8 @@ Color RadiosityIntegrator::highlights(const Hit& hit, const Bsdf& bsdf, const Ve
             if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
             const Color f = bsdf.glossyF(wo, ls.wi);
             if (f.isBlack()) continue;
-            sum += cosTheta * f * ls.irradiance * scene().transmittance(hit, ls, rayCount);
+            sum += cosTheta * f * ls.irradiance *
+                   ShadowRays::transmittance(scene(), hit, ls, rayCount);
         }
         L += sum / static_cast<float>(count);
     }

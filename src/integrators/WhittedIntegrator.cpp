@@ -4,11 +4,13 @@
 #include <bit>
 #include <cmath>
 
+#include "geometry/Shape.h"
 #include "materials/Bsdf.h"
 #include "materials/Material.h"
 #include "sampling/Sampler.h"
 #include "sampling/Sampling.h"
 #include "scene/Scene.h"
+#include "scene/ShadowRays.h"
 
 namespace lancer {
 
@@ -109,7 +111,7 @@ Color WhittedIntegrator::directLighting(const Hit& hit, const Bsdf& bsdf, const 
     const auto shade = [&](const LightSample& ls) {
         const Color brdfCos = bsdf.localResponse(wo, ls.wi, front);
         if (brdfCos.isBlack() || ls.irradiance.isBlack()) return Color(0);
-        return scene_.transmittance(hit, ls, rayCount) * ls.irradiance * brdfCos;
+        return ShadowRays::transmittance(scene_, hit, ls, rayCount) * ls.irradiance * brdfCos;
     };
     Color L;
     for (const auto& light : scene_.lights()) {

@@ -6,6 +6,7 @@
 #include "radiosity/SurfaceProbe.h"
 #include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
+#include "scene/ShadowRays.h"
 
 namespace lancer {
 
@@ -78,7 +79,7 @@ Color FormFactor::elementToTriangle(const Element& receiver, Side receiverSide,
         LightSample towards;
         towards.position = target;
         towards.wi = normalize(target - from.p);
-        visible += scene_.transmittance(from, towards, rayCount);
+        visible += ShadowRays::transmittance(scene_, from, towards, rayCount);
         ++counted;
     }
     if (counted == 0) return Color(0);

@@ -11,6 +11,7 @@
 #include "radiosity/SurfaceProbe.h"
 #include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
+#include "scene/ShadowRays.h"
 #include "util/ParallelFor.h"
 
 namespace lancer {
@@ -98,7 +99,7 @@ Color RadiositySolver::irradianceFromLights(const Scene& scene, const Vec3& p, c
             const LightSample ls = light.sample(p, u);
             const float cosTheta = dot(n, ls.wi);
             if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
-            sum += cosTheta * ls.irradiance * scene.transmittance(from, ls, rayCount);
+            sum += cosTheta * ls.irradiance * ShadowRays::transmittance(scene, from, ls, rayCount);
         }
         E += sum / static_cast<float>(count);
     }

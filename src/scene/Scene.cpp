@@ -1,6 +1,24 @@
 #include "scene/Scene.h"
 
+#include "accel/Bvh.h"
+#include "geometry/Shape.h"
+#include "lights/Light.h"
+#include "materials/Material.h"
+
 namespace lancer {
+
+Scene::Scene() : bvh_(std::make_unique<Bvh>()) {}
+Scene::~Scene() = default;
+Scene::Scene(Scene&&) noexcept = default;
+Scene& Scene::operator=(Scene&&) noexcept = default;
+
+std::size_t Scene::accelerationStructureBytes() const {
+    return bvh_->memoryBytes();
+}
+
+Bounds3 Scene::bounds() const {
+    return bvh_->bounds();
+}
 
 const Material* Scene::addMaterial(std::unique_ptr<Material> material) {
     materials_.push_back(std::move(material));
@@ -20,10 +38,10 @@ void Scene::buildAccelerationStructure() {
     bounds.reserve(boundedShapes_.size());
     for (const auto& shape : boundedShapes_)
         bounds.push_back(shape->bounds());
-    bvh_ = Bvh(bounds);
+    bvh_ = std::make_unique<Bvh>(bounds);
     std::vector<std::unique_ptr<Shape>> ordered;
     ordered.reserve(boundedShapes_.size());
-    for (std::uint32_t index : bvh_.primitiveOrder())
+    for (std::uint32_t index : bvh_->primitiveOrder())
         ordered.push_back(std::move(boundedShapes_[index]));
     boundedShapes_ = std::move(ordered);
 }
@@ -34,7 +52,7 @@ void Scene::addLight(std::unique_ptr<Light> light) {
 
 std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {
     std::optional<Hit> nearest;
-    bvh_.intersect(ray, tMax, [&](std::uint32_t k, const Ray& r, float& tFar) {
+    bvh_->intersect(ray, tMax, [&](std::uint32_t k, const Ray& r, float& tFar) {
         std::optional<Hit> hit = boundedShapes_[k]->intersect(r, tFar);
         if (!hit) return false;
         tFar = hit->t;
@@ -53,36 +71,9 @@ std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {
 bool Scene::occluded(const Ray& ray, float tMax) const {
     for (const auto& shape : unboundedShapes_)
         if (shape->occluded(ray, tMax)) return true;
-    return bvh_.occluded(ray, tMax, [&](std::uint32_t k, const Ray& r, float tFar) {
+    return bvh_->occluded(ray, tMax, [&](std::uint32_t k, const Ray& r, float tFar) {
         return boundedShapes_[k]->occluded(r, tFar);
     });
-}
-
-Color Scene::transmittance(const Hit& from, const LightSample& light,
-                           std::uint64_t& rayCount) const {
-    if (!hasTransmissiveMaterial_) {
-        // Everything is opaque: the first blocker decides, and any blocker will do.
-        const Ray ray =
-            light.atInfinity ? from.spawnRay(light.wi) : from.spawnRayTo(light.position);
-        ++rayCount;
-        return occluded(ray, light.atInfinity ? kInfinity : 1 - kShadowEpsilon) ? Color(0)
-                                                                                : Color(1);
-    }
-    Color visibility(1);
-    Hit surface = from;
-    // Each crossing starts beyond the surface just crossed, so the walk always moves towards
-    // the light and ends.
-    for (;;) {
-        const Ray ray =
-            light.atInfinity ? surface.spawnRay(light.wi) : surface.spawnRayTo(light.position);
-        const float tMax = light.atInfinity ? kInfinity : 1 - kShadowEpsilon;
-        ++rayCount;
-        const std::optional<Hit> blocker = intersect(ray, tMax);
-        if (!blocker) return visibility;
-        visibility *= blocker->material->transmission();
-        if (visibility.isBlack()) return visibility;
-        surface = *blocker;
-    }
 }
 
 }  // namespace lancer

@@ -5,14 +5,19 @@
 #include <string>
 #include <vector>
 
-#include "accel/Bvh.h"
-#include "geometry/Shape.h"
-#include "lights/Light.h"
-#include "materials/Material.h"
+#include "geometry/Hit.h"
+#include "math/Bounds3.h"
+#include "math/Color.h"
+#include "math/Ray.h"
 #include "scene/Camera.h"
 #include "scene/RenderSettings.h"
 
 namespace lancer {
+
+class Bvh;
+class Light;
+class Material;
+class Shape;
 
 // Everything a render needs: settings, camera, materials, shapes and lights. It owns them all;
 // shapes point to their materials, so a Scene is moved, never copied.
@@ -26,9 +31,10 @@ public:
         double loadSeconds = 0;              // reading files and building BVHs
     };
 
-    Scene() = default;
-    Scene(Scene&&) = default;
-    Scene& operator=(Scene&&) = default;
+    Scene();
+    ~Scene();
+    Scene(Scene&&) noexcept;
+    Scene& operator=(Scene&&) noexcept;
 
     RenderSettings& settings() { return settings_; }
     const RenderSettings& settings() const { return settings_; }
@@ -55,19 +61,19 @@ public:
     const Statistics& statistics() const { return statistics_; }
     std::size_t boundedShapeCount() const { return boundedShapes_.size(); }
     std::size_t unboundedShapeCount() const { return unboundedShapes_.size(); }
-    std::size_t accelerationStructureBytes() const { return bvh_.memoryBytes(); }
+    std::size_t accelerationStructureBytes() const;
     // The shapes in the BVH (all but infinite planes), and the box they fit in.
     const std::vector<std::unique_ptr<Shape>>& boundedShapes() const { return boundedShapes_; }
-    Bounds3 bounds() const { return bvh_.bounds(); }
+    Bounds3 bounds() const;
 
     // The nearest hit with 0 < t < tMax, if any.
     std::optional<Hit> intersect(const Ray& ray, float tMax) const;
     // Whether anything is hit with 0 < t < tMax.
     bool occluded(const Ray& ray, float tMax) const;
 
-    // The visibility V_l of a light sample from a surface point: the product of the transmission
-    // of every surface the shadow ray crosses on its way (0 behind anything opaque).
-    Color transmittance(const Hit& from, const LightSample& light, std::uint64_t& rayCount) const;
+    // Whether some surface lets light through (shadow rays must then look past the first
+    // surface they meet).
+    bool hasTransmissiveMaterial() const { return hasTransmissiveMaterial_; }
 
 private:
     RenderSettings settings_;
@@ -77,7 +83,7 @@ private:
     std::vector<std::unique_ptr<Material>> materials_;
     std::vector<std::unique_ptr<Shape>> boundedShapes_;  // in the BVH's leaf order once built
     std::vector<std::unique_ptr<Shape>> unboundedShapes_;
-    Bvh bvh_;
+    std::unique_ptr<Bvh> bvh_;  // over the bounded shapes
     bool hasTransmissiveMaterial_ = false;
     Statistics statistics_;
     std::vector<std::unique_ptr<Light>> lights_;

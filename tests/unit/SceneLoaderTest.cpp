@@ -10,7 +10,10 @@
 
 #include "IntersectInto.h"
 #include "TestSupport.h"
+#include "geometry/Shape.h"
 #include "io/SceneLoader.h"
+#include "lights/Light.h"
+#include "materials/Material.h"
 #include "scene/InputError.h"
 
 namespace lancer {
