@@ -3,6 +3,8 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <map>
+#include <optional>
 #include <sstream>
 
 #include "accel/Mesh.h"
@@ -14,6 +16,7 @@
 #include "geometry/Triangle.h"
 #include "integrators/IntegratorRegistry.h"
 #include "io/ImageReader.h"
+#include "io/JsonDocument.h"
 #include "io/ObjLoader.h"
 #include "lights/AreaLight.h"
 #include "lights/DirectionalLight.h"
@@ -23,9 +26,11 @@
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
 #include "materials/ImageTexture.h"
+#include "math/Transform.h"
 #include "render/Filter.h"
 #include "util/DidYouMean.h"
 #include "util/Parameters.h"
+#include "util/Registry.h"
 
 namespace lancer {
 
@@ -47,34 +52,133 @@ std::string describe(const nlohmann::json& v) {
 
 }  // namespace
 
+class SceneLoader::Reader {
+    using json = nlohmann::json;
+
+    // A value of the document, where it is (a JSON pointer) and what to call it in messages.
+    struct Node {
+        const json& value;
+        std::string pointer;
+        std::string name;
+
+        Node operator[](const std::string& key) const;  // an object's member
+        Node at(std::size_t index) const;               // an array's element
+        bool has(const std::string& key) const { return value.contains(key); }
+    };
+
+public:
+    Reader(const JsonDocument& doc, std::filesystem::path baseDir,
+           std::vector<std::string>& warnings);
+    Scene load();
+
+private:
+    void loadRender(const Node& node);
+    void loadFilter(const Node& node);
+    void loadAdaptive(const Node& render, const Node& node);
+    void loadRadiosity(const Node& node);
+    void loadCamera(const Node& node);
+    void loadMaterials(const Node& node);
+    std::unique_ptr<Material> loadMaterial(const Node& node);
+    std::shared_ptr<const Texture> loadTexture(const Node& node);
+    // A type of the "objects" or "lights" array, and the member reading its keys.
+    struct ObjectType {
+        const char* name;
+        const char* what;  // "a sphere": the object, in messages
+        void (Reader::*load)(const Node& node, const char* what,
+                             const std::optional<Transform>& transform);
+    };
+    // An object's keys, read for the class it makes.
+    class ObjectParameters;
+    struct LightType {
+        const char* name;
+        void (Reader::*load)(const Node& node);
+    };
+    static const Registry<ObjectType>& objectTypes();
+    static const Registry<LightType>& lightTypes();
+
+    void loadObject(const Node& node);
+    // A shape that reads its own keys: ShapeType::keys() and ShapeType::create(parameters,
+    // material).
+    template <typename ShapeType>
+    void loadShape(const Node& node, const char* what, const std::optional<Transform>& transform);
+    void loadTriangle(const Node& node, const char* what,
+                      const std::optional<Transform>& transform);
+    void loadMeshObject(const Node& node, const char* what,
+                        const std::optional<Transform>& transform);
+    void addShape(std::unique_ptr<Shape> shape, const std::optional<Transform>& transform);
+    std::shared_ptr<const Mesh> loadMesh(const Node& file);
+    std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
+    Transform readTransform(const Node& node) const;
+    void loadLight(const Node& node);
+    void loadPointLight(const Node& node);
+    void loadDirectionalLight(const Node& node);
+    void loadQuadLight(const Node& node);
+    void loadSphereLight(const Node& node);
+    void loadSpotLight(const Node& node);
+    bool readInverseSquareFalloff(const Node& light) const;
+    // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
+    const Material* emitterOf(const Color& radiance);
+    // Adds an area light and its visible surface, linked to each other.
+    void addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
+                      std::unique_ptr<Light> light);
+    const Material* materialOf(const Node& object);
+
+    [[noreturn]] void fail(const Node& node, const std::string& message) const;
+    [[noreturn]] void failAtKey(const Node& node, const std::string& message) const;
+    void warn(const Node& node, const std::string& message) const;
+    void checkKeys(const Node& object, const std::string& what,
+                   const std::vector<std::string>& allowed) const;
+    void requireObject(const Node& node, const std::string& what) const;
+    void requireArray(const Node& node, const std::string& what) const;
+    Node require(const Node& object, const std::string& key, const std::string& what) const;
+
+    bool readFlag(const Node& node) const;
+    float readNumber(const Node& node) const;
+    float readNumberAtLeast(const Node& node, float minimum, bool inclusive) const;
+    int readInt(const Node& node, int minimum) const;
+    std::string readString(const Node& node) const;
+    Vec3 readVec3(const Node& node) const;
+    Vec3 readDirection(const Node& node) const;
+    Vec2 readVec2(const Node& node) const;
+    Color readColor(const Node& node) const;
+
+    const JsonDocument& doc_;
+    std::filesystem::path baseDir_;  // relative paths in the scene start here
+    std::vector<std::string>& warnings_;
+    Scene scene_;
+    std::map<std::string, const Material*> materials_;
+    const Material* defaultMaterial_ = nullptr;
+    // Each model and texture file is loaded once, however many objects use it.
+    std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
+    std::map<std::string, std::shared_ptr<const Texture>> textures_;
+};
+
 // The scene file's object and light types: one registration line each.
-const Registry<SceneLoader::ObjectType>& SceneLoader::objectTypes() {
+const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectTypes() {
     static const Registry<ObjectType> types{
-        {"sphere", "a sphere", &SceneLoader::loadShape<Sphere>},
-        {"plane", "a plane", &SceneLoader::loadShape<Plane>},
-        {"triangle", "a triangle", &SceneLoader::loadTriangle},
-        {"mesh", "a mesh", &SceneLoader::loadMeshObject},
-        {"disk", "a disk", &SceneLoader::loadShape<Disk>},
+        {"sphere", "a sphere", &Reader::loadShape<Sphere>},
+        {"plane", "a plane", &Reader::loadShape<Plane>},
+        {"triangle", "a triangle", &Reader::loadTriangle},
+        {"mesh", "a mesh", &Reader::loadMeshObject},
+        {"disk", "a disk", &Reader::loadShape<Disk>},
     };
     return types;
 }
 
-const Registry<SceneLoader::LightType>& SceneLoader::lightTypes() {
+const Registry<SceneLoader::Reader::LightType>& SceneLoader::Reader::lightTypes() {
     static const Registry<LightType> types{
-        {"point", &SceneLoader::loadPointLight},
-        {"directional", &SceneLoader::loadDirectionalLight},
-        {"spot", &SceneLoader::loadSpotLight},
-        {"quad", &SceneLoader::loadQuadLight},
-        {"sphere", &SceneLoader::loadSphereLight},
+        {"point", &Reader::loadPointLight},   {"directional", &Reader::loadDirectionalLight},
+        {"spot", &Reader::loadSpotLight},     {"quad", &Reader::loadQuadLight},
+        {"sphere", &Reader::loadSphereLight},
     };
     return types;
 }
 
-SceneLoader::Node SceneLoader::Node::operator[](const std::string& key) const {
+SceneLoader::Reader::Node SceneLoader::Reader::Node::operator[](const std::string& key) const {
     return {value.at(key), JsonDocument::child(pointer, key), inQuotes(key)};
 }
 
-SceneLoader::Node SceneLoader::Node::at(std::size_t index) const {
+SceneLoader::Reader::Node SceneLoader::Reader::Node::at(std::size_t index) const {
     return {value.at(index), JsonDocument::child(pointer, index),
             "element " + std::to_string(index) + " of " + name};
 }
@@ -93,14 +197,14 @@ Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::
 Scene SceneLoader::loadString(const std::string& text, const std::string& fileName,
                               std::vector<std::string>& warnings) {
     const JsonDocument doc = JsonDocument::parse(text, fileName);
-    return SceneLoader(doc, std::filesystem::path(fileName).parent_path(), warnings).load();
+    return Reader(doc, std::filesystem::path(fileName).parent_path(), warnings).load();
 }
 
-SceneLoader::SceneLoader(const JsonDocument& doc, std::filesystem::path baseDir,
-                         std::vector<std::string>& warnings)
+SceneLoader::Reader::Reader(const JsonDocument& doc, std::filesystem::path baseDir,
+                            std::vector<std::string>& warnings)
     : doc_(doc), baseDir_(std::move(baseDir)), warnings_(warnings) {}
 
-Scene SceneLoader::load() {
+Scene SceneLoader::Reader::load() {
     const auto start = std::chrono::steady_clock::now();
     const Node root{doc_.root(), "", "the scene"};
     requireObject(root, "the scene");
@@ -134,7 +238,7 @@ Scene SceneLoader::load() {
     return std::move(scene_);
 }
 
-void SceneLoader::loadRender(const Node& node) {
+void SceneLoader::Reader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
     checkKeys(node, "\"render\"",
               {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive"});
@@ -156,7 +260,7 @@ void SceneLoader::loadRender(const Node& node) {
     if (node.has("adaptive")) loadAdaptive(node, node["adaptive"]);
 }
 
-void SceneLoader::loadFilter(const Node& node) {
+void SceneLoader::Reader::loadFilter(const Node& node) {
     FilterSettings& filter = scene_.settings().filter;
     if (node.value.is_object()) {
         checkKeys(node, "\"filter\"", {"type", "radius"});
@@ -179,7 +283,7 @@ void SceneLoader::loadFilter(const Node& node) {
                        "; expected \"box\", \"tent\", \"gaussian\" or \"mitchell\"");
 }
 
-void SceneLoader::loadAdaptive(const Node& render, const Node& node) {
+void SceneLoader::Reader::loadAdaptive(const Node& render, const Node& node) {
     requireObject(node, "\"adaptive\"");
     checkKeys(node, "\"adaptive\"", {"min_spp", "max_spp", "threshold"});
     RenderSettings& settings = scene_.settings();
@@ -207,7 +311,7 @@ void SceneLoader::loadAdaptive(const Node& render, const Node& node) {
     settings.adaptive = adaptive;
 }
 
-void SceneLoader::loadRadiosity(const Node& node) {
+void SceneLoader::Reader::loadRadiosity(const Node& node) {
     requireObject(node, "\"radiosity\"");
     checkKeys(node, "\"radiosity\"",
               {"patch_size", "element_size", "threshold", "max_shots", "subdivision_levels",
@@ -235,7 +339,7 @@ void SceneLoader::loadRadiosity(const Node& node) {
     }
 }
 
-void SceneLoader::loadCamera(const Node& node) {
+void SceneLoader::Reader::loadCamera(const Node& node) {
     requireObject(node, "\"camera\"");
     checkKeys(node, "\"camera\"",
               {"position", "look_at", "up", "vfov", "aperture", "focus_distance"});
@@ -258,13 +362,13 @@ void SceneLoader::loadCamera(const Node& node) {
     scene_.setCamera(Camera(position, lookAt, up, vfov, aperture, focusDistance));
 }
 
-void SceneLoader::loadMaterials(const Node& node) {
+void SceneLoader::Reader::loadMaterials(const Node& node) {
     requireObject(node, "\"materials\"");
     for (const auto& [name, value] : node.value.items())
         materials_[name] = scene_.addMaterial(loadMaterial(node[name]));
 }
 
-std::unique_ptr<Material> SceneLoader::loadMaterial(const Node& node) {
+std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
     requireObject(node, "material " + node.name);
     checkKeys(node, "a material",
               {"diffuse", "ambient", "specular", "shininess", "reflection", "transmission", "ior",
@@ -281,7 +385,7 @@ std::unique_ptr<Material> SceneLoader::loadMaterial(const Node& node) {
     return std::make_unique<BlinnPhongMaterial>(std::move(m));
 }
 
-std::shared_ptr<const Texture> SceneLoader::loadTexture(const Node& node) {
+std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node) {
     if (!node.value.is_object()) return std::make_shared<ConstantTexture>(readColor(node));
     checkKeys(node, "a texture", {"checker", "texture"});
     if (node.value.size() != 1)
@@ -304,7 +408,7 @@ std::shared_ptr<const Texture> SceneLoader::loadTexture(const Node& node) {
     return std::make_shared<CheckerTexture>(even, odd, scale);
 }
 
-const Material* SceneLoader::materialOf(const Node& object) {
+const Material* SceneLoader::Reader::materialOf(const Node& object) {
     if (!object.has("material")) return defaultMaterial_;
     const Node node = object["material"];
     const std::string name = readString(node);
@@ -316,7 +420,7 @@ const Material* SceneLoader::materialOf(const Node& object) {
     fail(node, "material " + inQuotes(name) + " is not defined" + didYouMean(name, names));
 }
 
-void SceneLoader::loadObject(const Node& node) {
+void SceneLoader::Reader::loadObject(const Node& node) {
     requireObject(node, "an object");
     const Node typeNode = require(node, "type", "an object");
     const std::string type = readString(typeNode);
@@ -330,9 +434,9 @@ void SceneLoader::loadObject(const Node& node) {
     (this->*entry->load)(node, entry->what, transform);
 }
 
-class SceneLoader::ObjectParameters final : public Parameters {
+class SceneLoader::Reader::ObjectParameters final : public Parameters {
 public:
-    ObjectParameters(const SceneLoader& loader, const Node& node, const char* what)
+    ObjectParameters(const Reader& loader, const Node& node, const char* what)
         : loader_(loader), node_(node), what_(what) {}
 
     bool has(const std::string& key) const override { return node_.has(key); }
@@ -359,14 +463,14 @@ public:
     }
 
 private:
-    const SceneLoader& loader_;
+    const Reader& loader_;
     const Node& node_;
     std::string what_;
 };
 
 template <typename ShapeType>
-void SceneLoader::loadShape(const Node& node, const char* what,
-                            const std::optional<Transform>& transform) {
+void SceneLoader::Reader::loadShape(const Node& node, const char* what,
+                                    const std::optional<Transform>& transform) {
     std::vector<std::string> keys{"type", "material", "transform"};
     for (std::string& key : ShapeType::keys())
         keys.push_back(std::move(key));
@@ -374,8 +478,8 @@ void SceneLoader::loadShape(const Node& node, const char* what,
     addShape(ShapeType::create(ObjectParameters(*this, node, what), materialOf(node)), transform);
 }
 
-void SceneLoader::loadTriangle(const Node& node, const char* what,
-                               const std::optional<Transform>& transform) {
+void SceneLoader::Reader::loadTriangle(const Node& node, const char* what,
+                                       const std::optional<Transform>& transform) {
     checkKeys(node, what, {"type", "vertices", "normals", "uvs", "material", "transform"});
     const auto readThree = [&](const std::string& key, auto read) {
         const Node list = require(node, key, what);
@@ -402,8 +506,8 @@ void SceneLoader::loadTriangle(const Node& node, const char* what,
         warn(node["vertices"], "triangle has zero area and is left out");
 }
 
-void SceneLoader::loadMeshObject(const Node& node, const char* what,
-                                 const std::optional<Transform>& transform) {
+void SceneLoader::Reader::loadMeshObject(const Node& node, const char* what,
+                                         const std::optional<Transform>& transform) {
     checkKeys(node, what, {"type", "file", "material", "transform"});
     std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what));
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
@@ -413,15 +517,15 @@ void SceneLoader::loadMeshObject(const Node& node, const char* what,
         std::make_unique<Instance>(std::move(mesh), transform.value_or(Transform()), material));
 }
 
-void SceneLoader::addShape(std::unique_ptr<Shape> shape,
-                           const std::optional<Transform>& transform) {
+void SceneLoader::Reader::addShape(std::unique_ptr<Shape> shape,
+                                   const std::optional<Transform>& transform) {
     if (transform)
         scene_.addShape(std::make_unique<Instance>(std::move(shape), *transform));
     else
         scene_.addShape(std::move(shape));
 }
 
-std::shared_ptr<const Mesh> SceneLoader::loadMesh(const Node& file) {
+std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
     const std::filesystem::path path = baseDir_ / readString(file);
     const std::string key = std::filesystem::weakly_canonical(path).string();
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
@@ -440,7 +544,8 @@ std::shared_ptr<const Mesh> SceneLoader::loadMesh(const Node& file) {
     }
 }
 
-std::shared_ptr<const Texture> SceneLoader::loadImageTexture(const std::filesystem::path& path) {
+std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTexture(
+    const std::filesystem::path& path) {
     const std::string key = std::filesystem::weakly_canonical(path).string();
     if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
     std::shared_ptr<const Texture> texture = ImageReader::readTexture(path);
@@ -448,7 +553,7 @@ std::shared_ptr<const Texture> SceneLoader::loadImageTexture(const std::filesyst
     return texture;
 }
 
-Transform SceneLoader::readTransform(const Node& node) const {
+Transform SceneLoader::Reader::readTransform(const Node& node) const {
     requireObject(node, "\"transform\"");
     checkKeys(node, "a transform", {"scale", "rotate", "translate", "matrix"});
     if (node.has("matrix")) {
@@ -508,7 +613,7 @@ Transform SceneLoader::readTransform(const Node& node) const {
     return result;
 }
 
-void SceneLoader::loadLight(const Node& node) {
+void SceneLoader::Reader::loadLight(const Node& node) {
     requireObject(node, "a light");
     const Node typeNode = require(node, "type", "a light");
     const std::string type = readString(typeNode);
@@ -520,7 +625,7 @@ void SceneLoader::loadLight(const Node& node) {
     (this->*entry->load)(node);
 }
 
-void SceneLoader::loadPointLight(const Node& node) {
+void SceneLoader::Reader::loadPointLight(const Node& node) {
     checkKeys(node, "a point light", {"type", "position", "intensity", "falloff"});
     const Vec3 position = readVec3(require(node, "position", "a point light"));
     const Color intensity = readColor(require(node, "intensity", "a point light"));
@@ -528,14 +633,14 @@ void SceneLoader::loadPointLight(const Node& node) {
         std::make_unique<PointLight>(position, intensity, readInverseSquareFalloff(node)));
 }
 
-void SceneLoader::loadDirectionalLight(const Node& node) {
+void SceneLoader::Reader::loadDirectionalLight(const Node& node) {
     checkKeys(node, "a directional light", {"type", "direction", "irradiance"});
     const Vec3 direction = readDirection(require(node, "direction", "a directional light"));
     const Color irradiance = readColor(require(node, "irradiance", "a directional light"));
     scene_.addLight(std::make_unique<DirectionalLight>(direction, irradiance));
 }
 
-void SceneLoader::loadQuadLight(const Node& node) {
+void SceneLoader::Reader::loadQuadLight(const Node& node) {
     checkKeys(node, "a quad light", {"type", "corner", "edge1", "edge2", "radiance", "samples"});
     const Vec3 corner = readVec3(require(node, "corner", "a quad light"));
     const Vec3 edge1 = readVec3(require(node, "edge1", "a quad light"));
@@ -551,7 +656,7 @@ void SceneLoader::loadQuadLight(const Node& node) {
     addAreaLight(node, std::move(surface), std::move(light));
 }
 
-void SceneLoader::loadSphereLight(const Node& node) {
+void SceneLoader::Reader::loadSphereLight(const Node& node) {
     checkKeys(node, "a sphere light", {"type", "center", "radius", "radiance", "samples"});
     const Vec3 center = readVec3(require(node, "center", "a sphere light"));
     const float radius = readNumberAtLeast(require(node, "radius", "a sphere light"), 0, false);
@@ -561,7 +666,7 @@ void SceneLoader::loadSphereLight(const Node& node) {
     addAreaLight(node, std::move(surface), std::move(light));
 }
 
-bool SceneLoader::readInverseSquareFalloff(const Node& light) const {
+bool SceneLoader::Reader::readInverseSquareFalloff(const Node& light) const {
     if (!light.has("falloff")) return true;
     const std::string falloff = readString(light["falloff"]);
     if (falloff == "none") return false;
@@ -572,7 +677,7 @@ bool SceneLoader::readInverseSquareFalloff(const Node& light) const {
     return true;
 }
 
-void SceneLoader::loadSpotLight(const Node& node) {
+void SceneLoader::Reader::loadSpotLight(const Node& node) {
     checkKeys(node, "a spot light",
               {"type", "position", "direction", "look_at", "intensity", "cone_angle",
                "cone_falloff", "falloff"});
@@ -606,7 +711,7 @@ void SceneLoader::loadSpotLight(const Node& node) {
                                                 coneFalloff, readInverseSquareFalloff(node)));
 }
 
-const Material* SceneLoader::emitterOf(const Color& radiance) {
+const Material* SceneLoader::Reader::emitterOf(const Color& radiance) {
     BlinnPhongMaterial::Parameters material;
     material.diffuse = std::make_shared<ConstantTexture>(Color(0));
     material.ambient = material.diffuse;
@@ -614,8 +719,8 @@ const Material* SceneLoader::emitterOf(const Color& radiance) {
     return scene_.addMaterial(std::make_unique<BlinnPhongMaterial>(std::move(material)));
 }
 
-void SceneLoader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
-                               std::unique_ptr<Light> light) {
+void SceneLoader::Reader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
+                                       std::unique_ptr<Light> light) {
     // How many shadow rays the Whitted integrator traces towards it per shading point.
     constexpr int kDefaultShadowSamples = 16;
     light->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
@@ -627,22 +732,22 @@ void SceneLoader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
 
 // --- reading values, with messages that say where and what ---
 
-void SceneLoader::fail(const Node& node, const std::string& message) const {
+void SceneLoader::Reader::fail(const Node& node, const std::string& message) const {
     throw InputError(doc_.fileName(), doc_.valueLocation(node.pointer), message);
 }
 
-void SceneLoader::failAtKey(const Node& node, const std::string& message) const {
+void SceneLoader::Reader::failAtKey(const Node& node, const std::string& message) const {
     throw InputError(doc_.fileName(), doc_.keyLocation(node.pointer), message);
 }
 
-void SceneLoader::warn(const Node& node, const std::string& message) const {
+void SceneLoader::Reader::warn(const Node& node, const std::string& message) const {
     const SourceLocation where = doc_.valueLocation(node.pointer);
     warnings_.push_back(doc_.fileName() + ":" + std::to_string(where.line) + ":" +
                         std::to_string(where.column) + ": warning: " + message);
 }
 
-void SceneLoader::checkKeys(const Node& object, const std::string& what,
-                            const std::vector<std::string>& allowed) const {
+void SceneLoader::Reader::checkKeys(const Node& object, const std::string& what,
+                                    const std::vector<std::string>& allowed) const {
     for (const auto& [key, value] : object.value.items()) {
         if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
         failAtKey(object[key],
@@ -650,29 +755,29 @@ void SceneLoader::checkKeys(const Node& object, const std::string& what,
     }
 }
 
-void SceneLoader::requireObject(const Node& node, const std::string& what) const {
+void SceneLoader::Reader::requireObject(const Node& node, const std::string& what) const {
     if (!node.value.is_object())
         fail(node, what + " must be an object {...}, got " + describe(node.value));
 }
 
-void SceneLoader::requireArray(const Node& node, const std::string& what) const {
+void SceneLoader::Reader::requireArray(const Node& node, const std::string& what) const {
     if (!node.value.is_array())
         fail(node, what + " must be an array [...], got " + describe(node.value));
 }
 
-SceneLoader::Node SceneLoader::require(const Node& object, const std::string& key,
-                                       const std::string& what) const {
+SceneLoader::Reader::Node SceneLoader::Reader::require(const Node& object, const std::string& key,
+                                                       const std::string& what) const {
     if (!object.has(key)) fail(object, what + " needs " + inQuotes(key));
     return object[key];
 }
 
-bool SceneLoader::readFlag(const Node& node) const {
+bool SceneLoader::Reader::readFlag(const Node& node) const {
     if (!node.value.is_boolean())
         fail(node, node.name + " must be true or false, got " + describe(node.value));
     return node.value.get<bool>();
 }
 
-float SceneLoader::readNumber(const Node& node) const {
+float SceneLoader::Reader::readNumber(const Node& node) const {
     if (!node.value.is_number())
         fail(node, node.name + " must be a number, got " + describe(node.value));
     const double v = node.value.get<double>();
@@ -680,7 +785,8 @@ float SceneLoader::readNumber(const Node& node) const {
     return static_cast<float>(v);
 }
 
-float SceneLoader::readNumberAtLeast(const Node& node, float minimum, bool inclusive) const {
+float SceneLoader::Reader::readNumberAtLeast(const Node& node, float minimum,
+                                             bool inclusive) const {
     const float v = readNumber(node);
     if (inclusive ? v < minimum : v <= minimum)
         fail(node, node.name + " must be " + (inclusive ? "at least " : "greater than ") +
@@ -688,7 +794,7 @@ float SceneLoader::readNumberAtLeast(const Node& node, float minimum, bool inclu
     return v;
 }
 
-int SceneLoader::readInt(const Node& node, int minimum) const {
+int SceneLoader::Reader::readInt(const Node& node, int minimum) const {
     if (!node.value.is_number_integer())
         fail(node, node.name + " must be a whole number, got " + describe(node.value));
     const auto v = node.value.get<long long>();
@@ -697,13 +803,13 @@ int SceneLoader::readInt(const Node& node, int minimum) const {
     return static_cast<int>(v);
 }
 
-std::string SceneLoader::readString(const Node& node) const {
+std::string SceneLoader::Reader::readString(const Node& node) const {
     if (!node.value.is_string())
         fail(node, node.name + " must be a string, got " + describe(node.value));
     return node.value.get<std::string>();
 }
 
-Vec3 SceneLoader::readVec3(const Node& node) const {
+Vec3 SceneLoader::Reader::readVec3(const Node& node) const {
     if (!node.value.is_array() || node.value.size() != 3)
         fail(node,
              node.name + " must be an array of 3 numbers [x, y, z], got " + describe(node.value));
@@ -713,21 +819,21 @@ Vec3 SceneLoader::readVec3(const Node& node) const {
     return v;
 }
 
-Vec3 SceneLoader::readDirection(const Node& node) const {
+Vec3 SceneLoader::Reader::readDirection(const Node& node) const {
     const Vec3 v = readVec3(node);
     if (!(lengthSquared(v) > 0) || !isFinite(normalize(v)))
         fail(node, node.name + " must be a non-zero direction");
     return v;
 }
 
-Vec2 SceneLoader::readVec2(const Node& node) const {
+Vec2 SceneLoader::Reader::readVec2(const Node& node) const {
     if (!node.value.is_array() || node.value.size() != 2)
         fail(node,
              node.name + " must be an array of 2 numbers [u, v], got " + describe(node.value));
     return {readNumber(node.at(0)), readNumber(node.at(1))};
 }
 
-Color SceneLoader::readColor(const Node& node) const {
+Color SceneLoader::Reader::readColor(const Node& node) const {
     if (node.value.is_number()) {
         const float grey = readNumberAtLeast(node, 0, true);
         return Color(grey);

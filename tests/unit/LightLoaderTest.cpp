@@ -9,10 +9,13 @@
 
 #include "IntersectInto.h"
 #include "TestSupport.h"
+#include "geometry/Shape.h"
 #include "io/SceneLoader.h"
 #include "lights/AreaLight.h"
+#include "lights/Light.h"
 #include "lights/SpotLight.h"
 #include "materials/BlinnPhongMaterial.h"
+#include "materials/Material.h"
 
 namespace lancer {
 namespace {
