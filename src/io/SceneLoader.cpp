@@ -26,6 +26,7 @@
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
 #include "materials/ImageTexture.h"
+#include "materials/MaterialParameters.h"
 #include "math/Transform.h"
 #include "render/Filter.h"
 #include "util/DidYouMean.h"
@@ -93,7 +94,20 @@ private:
         const char* name;
         void (Reader::*load)(const Node& node);
     };
+    // A material type, chosen by the material's "type" key (by default "blinn_phong").
+    struct MaterialType {
+        const char* name;
+        std::vector<std::string> (*keys)();
+        std::unique_ptr<Material> (*create)(const MaterialParameters& parameters);
+    };
+    // A texture, named by the one key of its object ({"checker": {...}}).
+    struct TextureType {
+        const char* name;
+        std::shared_ptr<const Texture> (Reader::*load)(const Node& value);
+    };
     static const Registry<ObjectType>& objectTypes();
+    static const Registry<MaterialType>& materialTypes();
+    static const Registry<TextureType>& textureTypes();
     static const Registry<LightType>& lightTypes();
 
     void loadObject(const Node& node);
@@ -107,7 +121,10 @@ private:
                         const std::optional<Transform>& transform);
     void addShape(std::unique_ptr<Shape> shape, const std::optional<Transform>& transform);
     std::shared_ptr<const Mesh> loadMesh(const Node& file);
+    // Image files are read once, however many materials (and models) use them.
     std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
+    std::shared_ptr<const Texture> loadImageTextureFile(const Node& file);
+    std::shared_ptr<const Texture> loadCheckerTexture(const Node& checker);
     Transform readTransform(const Node& node) const;
     void loadLight(const Node& node);
     void loadPointLight(const Node& node);
@@ -153,6 +170,43 @@ private:
     std::map<std::string, std::shared_ptr<const Texture>> textures_;
 };
 
+class SceneLoader::Reader::ObjectParameters final : public MaterialParameters {
+public:
+    ObjectParameters(Reader& loader, const Node& node, const char* what)
+        : loader_(loader), node_(node), what_(what) {}
+
+    bool has(const std::string& key) const override { return node_.has(key); }
+    float number(const std::string& key) const override {
+        return loader_.readNumber(loader_.require(node_, key, what_));
+    }
+    float numberAbove(const std::string& key, float minimum, bool inclusive) const override {
+        return loader_.readNumberAtLeast(loader_.require(node_, key, what_), minimum, inclusive);
+    }
+    Vec3 point(const std::string& key) const override {
+        return loader_.readVec3(loader_.require(node_, key, what_));
+    }
+    Vec3 direction(const std::string& key) const override {
+        return loader_.readDirection(loader_.require(node_, key, what_));
+    }
+    Color color(const std::string& key) const override {
+        return loader_.readColor(loader_.require(node_, key, what_));
+    }
+    bool flag(const std::string& key) const override {
+        return loader_.readFlag(loader_.require(node_, key, what_));
+    }
+    std::shared_ptr<const Texture> texture(const std::string& key) const override {
+        return loader_.loadTexture(loader_.require(node_, key, what_));
+    }
+    [[noreturn]] void fail(const std::string& key, const std::string& message) const override {
+        loader_.fail(node_.has(key) ? node_[key] : node_, message);
+    }
+
+private:
+    Reader& loader_;
+    const Node& node_;
+    std::string what_;
+};
+
 // The scene file's object and light types: one registration line each.
 const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectTypes() {
     static const Registry<ObjectType> types{
@@ -161,6 +215,21 @@ const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectType
         {"triangle", "a triangle", &Reader::loadTriangle},
         {"mesh", "a mesh", &Reader::loadMeshObject},
         {"disk", "a disk", &Reader::loadShape<Disk>},
+    };
+    return types;
+}
+
+const Registry<SceneLoader::Reader::MaterialType>& SceneLoader::Reader::materialTypes() {
+    static const Registry<MaterialType> types{
+        {"blinn_phong", &BlinnPhongMaterial::keys, &BlinnPhongMaterial::create},
+    };
+    return types;
+}
+
+const Registry<SceneLoader::Reader::TextureType>& SceneLoader::Reader::textureTypes() {
+    static const Registry<TextureType> types{
+        {"texture", &Reader::loadImageTextureFile},
+        {"checker", &Reader::loadCheckerTexture},
     };
     return types;
 }
@@ -277,10 +346,10 @@ void SceneLoader::Reader::loadFilter(const Node& node) {
     }
     const Node type = node.value.is_object() ? require(node, "type", "\"filter\"") : node;
     filter.type = readString(type);
-    const std::vector<std::string>& names = Filter::typeNames();
-    if (std::find(names.begin(), names.end(), filter.type) == names.end())
-        fail(type, "unknown filter " + inQuotes(filter.type) + didYouMean(filter.type, names) +
-                       "; expected \"box\", \"tent\", \"gaussian\" or \"mitchell\"");
+    if (!Filter::types().find(filter.type))
+        fail(type, "unknown filter " + inQuotes(filter.type) +
+                       didYouMean(filter.type, Filter::types().names()) + "; expected " +
+                       Filter::types().quotedNames());
 }
 
 void SceneLoader::Reader::loadAdaptive(const Node& render, const Node& node) {
@@ -370,42 +439,42 @@ void SceneLoader::Reader::loadMaterials(const Node& node) {
 
 std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
     requireObject(node, "material " + node.name);
-    checkKeys(node, "a material",
-              {"diffuse", "ambient", "specular", "shininess", "reflection", "transmission", "ior",
-               "emission"});
-    BlinnPhongMaterial::Parameters m;
-    if (node.has("diffuse")) m.diffuse = loadTexture(node["diffuse"]);
-    m.ambient = node.has("ambient") ? loadTexture(node["ambient"]) : m.diffuse;
-    if (node.has("specular")) m.specular = readColor(node["specular"]);
-    if (node.has("shininess")) m.shininess = readNumberAtLeast(node["shininess"], 0, true);
-    if (node.has("reflection")) m.reflection = readColor(node["reflection"]);
-    if (node.has("transmission")) m.transmission = readColor(node["transmission"]);
-    if (node.has("ior")) m.ior = readNumberAtLeast(node["ior"], 0, false);
-    if (node.has("emission")) m.emission = readColor(node["emission"]);
-    return std::make_unique<BlinnPhongMaterial>(std::move(m));
+    std::string type = "blinn_phong";
+    if (node.has("type")) type = readString(node["type"]);
+    const MaterialType* entry = materialTypes().find(type);
+    if (!entry)
+        fail(node["type"], "unknown material type " + inQuotes(type) +
+                               didYouMean(type, materialTypes().names()) + "; expected " +
+                               materialTypes().quotedNames());
+    std::vector<std::string> keys{"type"};
+    for (std::string& key : entry->keys())
+        keys.push_back(std::move(key));
+    checkKeys(node, "a material", keys);
+    return entry->create(ObjectParameters(*this, node, "a material"));
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node) {
     if (!node.value.is_object()) return std::make_shared<ConstantTexture>(readColor(node));
-    checkKeys(node, "a texture", {"checker", "texture"});
+    checkKeys(node, "a texture", textureTypes().names());
     if (node.value.size() != 1)
-        fail(node, "a texture is either {\"checker\": ...} or {\"texture\": FILE}");
-    if (node.has("texture")) {
-        const Node file = node["texture"];
-        const std::filesystem::path path = baseDir_ / readString(file);
-        try {
-            return loadImageTexture(path);
-        } catch (const InputError& e) {
-            fail(file, "texture " + inQuotes(path.string()) + ": " + e.message());
-        }
+        fail(node, "a texture is one of " + textureTypes().quotedNames() + ": {NAME: ...}");
+    const std::string name = node.value.begin().key();
+    return (this->*textureTypes().find(name)->load)(node[name]);
+}
+
+std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTextureFile(const Node& file) {
+    const std::filesystem::path path = baseDir_ / readString(file);
+    try {
+        return loadImageTexture(path);
+    } catch (const InputError& e) {
+        fail(file, "texture " + inQuotes(path.string()) + ": " + e.message());
     }
-    const Node checker = node["checker"];
+}
+
+std::shared_ptr<const Texture> SceneLoader::Reader::loadCheckerTexture(const Node& checker) {
     requireObject(checker, "\"checker\"");
-    checkKeys(checker, "\"checker\"", {"even", "odd", "scale"});
-    const Color even = checker.has("even") ? readColor(checker["even"]) : Color(1);
-    const Color odd = checker.has("odd") ? readColor(checker["odd"]) : Color(0);
-    const float scale = checker.has("scale") ? readNumberAtLeast(checker["scale"], 0, false) : 1;
-    return std::make_shared<CheckerTexture>(even, odd, scale);
+    checkKeys(checker, "\"checker\"", CheckerTexture::keys());
+    return CheckerTexture::create(ObjectParameters(*this, checker, "\"checker\""));
 }
 
 const Material* SceneLoader::Reader::materialOf(const Node& object) {
@@ -433,40 +502,6 @@ void SceneLoader::Reader::loadObject(const Node& node) {
     if (node.has("transform")) transform = readTransform(node["transform"]);
     (this->*entry->load)(node, entry->what, transform);
 }
-
-class SceneLoader::Reader::ObjectParameters final : public Parameters {
-public:
-    ObjectParameters(const Reader& loader, const Node& node, const char* what)
-        : loader_(loader), node_(node), what_(what) {}
-
-    bool has(const std::string& key) const override { return node_.has(key); }
-    float number(const std::string& key) const override {
-        return loader_.readNumber(loader_.require(node_, key, what_));
-    }
-    float numberAbove(const std::string& key, float minimum, bool inclusive) const override {
-        return loader_.readNumberAtLeast(loader_.require(node_, key, what_), minimum, inclusive);
-    }
-    Vec3 point(const std::string& key) const override {
-        return loader_.readVec3(loader_.require(node_, key, what_));
-    }
-    Vec3 direction(const std::string& key) const override {
-        return loader_.readDirection(loader_.require(node_, key, what_));
-    }
-    Color color(const std::string& key) const override {
-        return loader_.readColor(loader_.require(node_, key, what_));
-    }
-    bool flag(const std::string& key) const override {
-        return loader_.readFlag(loader_.require(node_, key, what_));
-    }
-    [[noreturn]] void fail(const std::string& key, const std::string& message) const override {
-        loader_.fail(node_.has(key) ? node_[key] : node_, message);
-    }
-
-private:
-    const Reader& loader_;
-    const Node& node_;
-    std::string what_;
-};
 
 template <typename ShapeType>
 void SceneLoader::Reader::loadShape(const Node& node, const char* what,

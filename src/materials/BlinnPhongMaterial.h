@@ -1,9 +1,12 @@
 #pragma once
 
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "materials/ConstantTexture.h"
 #include "materials/Material.h"
+#include "materials/MaterialParameters.h"
 
 namespace lancer {
 
@@ -27,6 +30,12 @@ public:
 
     BlinnPhongMaterial() = default;
     explicit BlinnPhongMaterial(Parameters parameters);
+    // The scene file's "blinn_phong" material, every key optional.
+    static std::vector<std::string> keys() {
+        return {"diffuse",    "ambient",      "specular", "shininess",
+                "reflection", "transmission", "ior",      "emission"};
+    }
+    static std::unique_ptr<Material> create(const MaterialParameters& parameters);
 
     void addLobes(const Hit& hit, Bsdf& bsdf) const override;
     Color diffuseReflectance(const Hit& hit) const override;

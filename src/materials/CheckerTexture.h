@@ -1,6 +1,11 @@
 #pragma once
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "materials/Texture.h"
+#include "util/Parameters.h"
 
 namespace lancer {
 
@@ -8,6 +13,10 @@ namespace lancer {
 class CheckerTexture final : public Texture {
 public:
     CheckerTexture(const Color& even, const Color& odd, float scale);
+    // The scene file's {"checker": {"even": A, "odd": B, "scale": s}}, every key optional
+    // (white, black, 1).
+    static std::vector<std::string> keys() { return {"even", "odd", "scale"}; }
+    static std::shared_ptr<const Texture> create(const Parameters& parameters);
     Color evaluate(const Hit& hit) const override;
 
 private:

@@ -10,25 +10,34 @@
 
 namespace lancer {
 
-std::unique_ptr<Filter> Filter::create(const FilterSettings& settings) {
+namespace {
+
+template <typename FilterType>
+std::unique_ptr<Filter> make(float radius) {
+    return std::make_unique<FilterType>(radius);
+}
+
+}  // namespace
+
+const Registry<Filter::Type>& Filter::types() {
     // Default radii: the box covers the pixel exactly (the plain average of the contract); the
     // tent reaches the neighbouring pixel centres; the Gaussian and Mitchell defaults are
     // pbrt-v4's (Mitchell and Netravali's kernel spans 2 pixels on each side).
-    const auto radius = [&](float byDefault) {
-        const float r = settings.radius.value_or(byDefault);
-        if (!(r > 0)) throw std::invalid_argument("the filter radius must be greater than 0");
-        return r;
+    static const Registry<Type> filters{
+        {"box", 0.5f, &make<BoxFilter>},
+        {"tent", 1.0f, &make<TentFilter>},
+        {"gaussian", 1.5f, &make<GaussianFilter>},
+        {"mitchell", 2.0f, &make<MitchellFilter>},
     };
-    if (settings.type == "box") return std::make_unique<BoxFilter>(radius(0.5f));
-    if (settings.type == "tent") return std::make_unique<TentFilter>(radius(1.0f));
-    if (settings.type == "gaussian") return std::make_unique<GaussianFilter>(radius(1.5f));
-    if (settings.type == "mitchell") return std::make_unique<MitchellFilter>(radius(2.0f));
-    throw std::invalid_argument("unknown filter \"" + settings.type + "\"");
+    return filters;
 }
 
-const std::vector<std::string>& Filter::typeNames() {
-    static const std::vector<std::string> names{"box", "tent", "gaussian", "mitchell"};
-    return names;
+std::unique_ptr<Filter> Filter::create(const FilterSettings& settings) {
+    const Type* type = types().find(settings.type);
+    if (!type) throw std::invalid_argument("unknown filter \"" + settings.type + "\"");
+    const float radius = settings.radius.value_or(type->defaultRadius);
+    if (!(radius > 0)) throw std::invalid_argument("the filter radius must be greater than 0");
+    return type->create(radius);
 }
 
 }  // namespace lancer

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "math/Vec2.h"
+#include "util/Registry.h"
 
 namespace lancer {
 
@@ -22,11 +23,18 @@ public:
     virtual float profile(float x) const = 0;
     float evaluate(const Vec2& offset) const { return profile(offset.x) * profile(offset.y); }
 
+    // A filter the scene's "filter" can name, with its default radius.
+    struct Type {
+        const char* name;
+        float defaultRadius;
+        std::unique_ptr<Filter> (*create)(float radius);
+    };
+    // The filters, by name: one registration line each.
+    static const Registry<Type>& types();
+
     // The filter `settings` names, with its type's default radius when it gives none. Throws
-    // std::invalid_argument for a type not in typeNames() or a radius that is not > 0.
+    // std::invalid_argument for a type not in types() or a radius that is not > 0.
     static std::unique_ptr<Filter> create(const FilterSettings& settings);
-    // "box", "tent", "gaussian", "mitchell".
-    static const std::vector<std::string>& typeNames();
 
 protected:
     explicit Filter(float radius) : radius_(radius) {}

@@ -119,7 +119,7 @@ TEST(FilterTest, FactoryRejectsUnknownTypesAndBadRadii) {
     EXPECT_THROW(makeFilter("box", 0.0f), std::invalid_argument);
     EXPECT_THROW(makeFilter("tent", -1.0f), std::invalid_argument);
     EXPECT_THROW(makeFilter("gaussian", std::nanf("")), std::invalid_argument);
-    for (const std::string& name : Filter::typeNames())
+    for (const std::string& name : Filter::types().names())
         EXPECT_NO_THROW(makeFilter(name));
 }
 

@@ -1,0 +1,19 @@
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "materials/Texture.h"
+#include "util/Parameters.h"
+
+namespace lancer {
+
+// The keys of a material of the scene file, for the material class to read itself: numbers and
+// colours as any object's, and textures.
+class MaterialParameters : public Parameters {
+public:
+    // A colour, or a texture the loader knows ({"texture": FILE}, {"checker": {...}}).
+    virtual std::shared_ptr<const Texture> texture(const std::string& key) const = 0;
+};
+
+}  // namespace lancer
