@@ -9,6 +9,7 @@
 #include "materials/Material.h"
 #include "sampling/Sampler.h"
 #include "sampling/Sampling.h"
+#include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
 #include "scene/ShadowRays.h"
 
@@ -74,30 +75,6 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     return L;
 }
 
-namespace {
-
-// Point k of `count` points over the unit square, one per cell of a jittered grid of about
-// sqrt(count) x sqrt(count) cells (the last row's cells widened so that the cells tile the
-// square), the whole pattern shifted by `offset` with wrap-around. Under a uniformly random
-// offset every point is uniform over the square, so the average over the points is unbiased
-// whatever the jitter; the grid keeps them spread out. The jitter is a hash of (jitterSeed, k).
-Vec2 stratifiedPoint(int k, int count, const Vec2& offset, std::uint64_t jitterSeed) {
-    const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
-    const int rows = (count + columns - 1) / columns;
-    const int row = k / columns;
-    const int cellsInRow = row < rows - 1 ? columns : count - (rows - 1) * columns;
-    const std::uint64_t bits = hashValues(jitterSeed, k);
-    const float jitterX = static_cast<float>(bits >> 40) * 0x1p-24f;
-    const float jitterY = static_cast<float>(bits & 0xffffff) * 0x1p-24f;
-    // Below 2, so one subtraction (exact in [1, 2)) brings it back into [0, 1).
-    const auto wrap = [](float x) { return x >= 1 ? x - 1 : x; };
-    return {wrap((static_cast<float>(k % columns) + jitterX) / static_cast<float>(cellsInRow) +
-                 offset.x),
-            wrap((static_cast<float>(row) + jitterY) / static_cast<float>(rows) + offset.y)};
-}
-
-}  // namespace
-
 Color WhittedIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const Vec3& wo, bool front,
                                       Sampler& sampler, std::uint64_t& rayCount) const {
     return hit.material->ambientReflectance(hit) * scene_.ambient() +
@@ -119,15 +96,18 @@ Color WhittedIntegrator::directLighting(const Hit& hit, const Bsdf& bsdf, const 
             L += shade(light->sample(hit.p, Vec2(0.5f, 0.5f)));
             continue;
         }
-        // An area light: the average over its shadow samples, stratified over the light, with a
-        // fresh offset (and jitter) at every hit from the sampler.
+        // An area light: the average over its shadow samples, stratified over the light, the
+        // pattern shifted by a fresh offset from the sampler at every hit (with wrap-around, so
+        // that every point is uniform over the light and the average unbiased) and jittered by
+        // a hash of that offset.
         const int count = light->shadowSamples();
         const Vec2 offset = sampler.get2D();
         const std::uint64_t jitterSeed = hashValues(std::bit_cast<std::uint32_t>(offset.x),
                                                     std::bit_cast<std::uint32_t>(offset.y));
         Color sum;
         for (int k = 0; k < count; ++k)
-            sum += shade(light->sample(hit.p, stratifiedPoint(k, count, offset, jitterSeed)));
+            sum +=
+                shade(light->sample(hit.p, shifted(stratifiedPoint(k, count, jitterSeed), offset)));
         L += sum / static_cast<float>(count);
     }
     return L;

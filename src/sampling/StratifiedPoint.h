@@ -31,4 +31,12 @@ inline Vec2 stratifiedPoint(int k, int count, std::uint64_t seed) {
         std::min((static_cast<float>(row) + jitterY) / static_cast<float>(rows), kOneMinusEpsilon)};
 }
 
+// A point of the unit square moved by `offset` (in [0, 1)^2) with wrap-around: a uniformly random
+// offset makes every point of a pattern uniform over the square.
+inline Vec2 shifted(const Vec2& point, const Vec2& offset) {
+    // Below 2, so one subtraction (exact in [1, 2)) brings it back into [0, 1).
+    const auto wrap = [](float x) { return x >= 1 ? x - 1 : x; };
+    return {wrap(point.x + offset.x), wrap(point.y + offset.y)};
+}
+
 }  // namespace lancer
