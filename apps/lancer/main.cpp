@@ -272,7 +272,17 @@ int run(const Options& options) {
 
 int main(int argc, char** argv) {
     Options options;
-    CLI::App app{"lancer: a Whitted-style ray tracer. Renders SCENE.json to an image.", "lancer"};
+    CLI::App app{
+        "lancer: a ray tracer (Whitted, path tracing, radiosity). Renders SCENE.json to "
+        "an image.",
+        "lancer"};
+    std::string names = "\nWhat a scene can name (docs/SCENE-FORMAT.md):";
+    for (const SceneLoader::Vocabulary& v : SceneLoader::vocabulary()) {
+        names += "\n  " + v.what + ":";
+        for (const std::string& name : v.names)
+            names += " " + name;
+    }
+    app.footer(names);
     app.set_version_flag("--version", std::string("lancer ") + LANCER_VERSION);
     app.add_option("scene", options.scene, "Scene file (JSON, see docs/SCENE-FORMAT.md)")
         ->required();

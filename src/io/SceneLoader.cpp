@@ -73,6 +73,8 @@ public:
     Scene load();
 
 private:
+    friend class SceneLoader;  // its vocabulary() lists the tables
+
     void loadRender(const Node& node);
     void loadFilter(const Node& node);
     void loadAdaptive(const Node& render, const Node& node);
@@ -250,6 +252,15 @@ SceneLoader::Reader::Node SceneLoader::Reader::Node::operator[](const std::strin
 SceneLoader::Reader::Node SceneLoader::Reader::Node::at(std::size_t index) const {
     return {value.at(index), JsonDocument::child(pointer, index),
             "element " + std::to_string(index) + " of " + name};
+}
+
+std::vector<SceneLoader::Vocabulary> SceneLoader::vocabulary() {
+    return {{"objects", Reader::objectTypes().names()},
+            {"lights", Reader::lightTypes().names()},
+            {"materials", Reader::materialTypes().names()},
+            {"textures", Reader::textureTypes().names()},
+            {"filters", Filter::types().names()},
+            {"integrators", IntegratorRegistry::table().names()}};
 }
 
 Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {

@@ -19,6 +19,14 @@ public:
     static Scene loadString(const std::string& text, const std::string& fileName,
                             std::vector<std::string>& warnings);
 
+    // What the scene format can name, from the tables the loader reads: the object, light,
+    // material, texture, filter and integrator types, each under the key that names them.
+    struct Vocabulary {
+        std::string what;  // "objects", "lights"...
+        std::vector<std::string> names;
+    };
+    static std::vector<Vocabulary> vocabulary();
+
 private:
     // The reading of one document (the JSON and everything the reading keeps are the .cpp's).
     class Reader;

@@ -3,7 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
 #include "LancerRun.h"
+#include "io/SceneLoader.h"
 
 namespace lancer::test {
 namespace {
@@ -132,6 +136,26 @@ TEST(CliHelp, ListsEveryOptionOfTheContract) {
          {"--output", "--width", "--height", "--spp", "--max-depth", "--integrator", "--threads",
           "--seed", "--crop", "--window", "--quiet", "--help", "--version"})
         EXPECT_NE(run.standardOutput.find(option), std::string::npos) << option;
+}
+
+// The tables the scene loader reads are the lists --help and the documentation give.
+TEST(CliHelp, ListsWhatAScenesCanNameAsTheDocumentationDoes) {
+    const TempFolder folder;
+    const RunResult run = runLancer({"--help"}, folder.path());
+    std::ifstream file(fs::path(LANCER_SOURCE_DIR) / "docs/SCENE-FORMAT.md");
+    const std::string documentation((std::istreambuf_iterator<char>(file)),
+                                    std::istreambuf_iterator<char>());
+    ASSERT_FALSE(documentation.empty());
+    for (const SceneLoader::Vocabulary& v : SceneLoader::vocabulary()) {
+        std::string line = "  " + v.what + ":";
+        for (const std::string& name : v.names) {
+            line += " " + name;
+            EXPECT_TRUE(documentation.find("`" + name + "`") != std::string::npos ||
+                        documentation.find("\"" + name + "\"") != std::string::npos)
+                << v.what << " " << name << " is not in docs/SCENE-FORMAT.md";
+        }
+        EXPECT_NE(run.standardOutput.find(line + "\n"), std::string::npos) << line;
+    }
 }
 
 TEST(CliVersion, PrintsTheVersion) {
