@@ -94,7 +94,8 @@ private:
     class ObjectParameters;
     struct LightType {
         const char* name;
-        void (Reader::*load)(const Node& node);
+        const char* what;  // "a point light": the light, in messages
+        void (Reader::*load)(const Node& node, const char* what);
     };
     // A material type, chosen by the material's "type" key (by default "blinn_phong").
     struct MaterialType {
@@ -129,12 +130,11 @@ private:
     std::shared_ptr<const Texture> loadCheckerTexture(const Node& checker);
     Transform readTransform(const Node& node) const;
     void loadLight(const Node& node);
-    void loadPointLight(const Node& node);
-    void loadDirectionalLight(const Node& node);
-    void loadQuadLight(const Node& node);
-    void loadSphereLight(const Node& node);
-    void loadSpotLight(const Node& node);
-    bool readInverseSquareFalloff(const Node& light) const;
+    // A light that reads its own keys: LightType::keys() and LightType::create(parameters).
+    template <typename LightType>
+    void loadLight(const Node& node, const char* what);
+    void loadQuadLight(const Node& node, const char* what);
+    void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
     const Material* emitterOf(const Color& radiance);
     // Adds an area light and its visible surface, linked to each other.
@@ -196,6 +196,18 @@ public:
     bool flag(const std::string& key) const override {
         return loader_.readFlag(loader_.require(node_, key, what_));
     }
+    std::size_t choice(const std::string& key,
+                       const std::vector<std::string>& options) const override {
+        const Node value = loader_.require(node_, key, what_);
+        const std::string text = loader_.readString(value);
+        const auto it = std::find(options.begin(), options.end(), text);
+        if (it == options.end()) {
+            loader_.fail(value, "unknown " + key + " " + inQuotes(text) +
+                                    didYouMean(text, options) + "; expected " +
+                                    quotedNames(options));
+        }
+        return static_cast<std::size_t>(it - options.begin());
+    }
     std::shared_ptr<const Texture> texture(const std::string& key) const override {
         return loader_.loadTexture(loader_.require(node_, key, what_));
     }
@@ -238,9 +250,11 @@ const Registry<SceneLoader::Reader::TextureType>& SceneLoader::Reader::textureTy
 
 const Registry<SceneLoader::Reader::LightType>& SceneLoader::Reader::lightTypes() {
     static const Registry<LightType> types{
-        {"point", &Reader::loadPointLight},   {"directional", &Reader::loadDirectionalLight},
-        {"spot", &Reader::loadSpotLight},     {"quad", &Reader::loadQuadLight},
-        {"sphere", &Reader::loadSphereLight},
+        {"point", "a point light", &Reader::loadLight<PointLight>},
+        {"directional", "a directional light", &Reader::loadLight<DirectionalLight>},
+        {"spot", "a spot light", &Reader::loadLight<SpotLight>},
+        {"quad", "a quad light", &Reader::loadQuadLight},
+        {"sphere", "a sphere light", &Reader::loadSphereLight},
     };
     return types;
 }
@@ -524,6 +538,15 @@ void SceneLoader::Reader::loadShape(const Node& node, const char* what,
     addShape(ShapeType::create(ObjectParameters(*this, node, what), materialOf(node)), transform);
 }
 
+template <typename LightType>
+void SceneLoader::Reader::loadLight(const Node& node, const char* what) {
+    std::vector<std::string> keys{"type"};
+    for (std::string& key : LightType::keys())
+        keys.push_back(std::move(key));
+    checkKeys(node, what, keys);
+    scene_.addLight(LightType::create(ObjectParameters(*this, node, what)));
+}
+
 void SceneLoader::Reader::loadTriangle(const Node& node, const char* what,
                                        const std::optional<Transform>& transform) {
     checkKeys(node, what, {"type", "vertices", "normals", "uvs", "material", "transform"});
@@ -668,93 +691,33 @@ void SceneLoader::Reader::loadLight(const Node& node) {
         fail(typeNode, "unknown light type " + inQuotes(type) +
                            didYouMean(type, lightTypes().names()) + "; expected " +
                            lightTypes().quotedNames());
-    (this->*entry->load)(node);
+    (this->*entry->load)(node, entry->what);
 }
 
-void SceneLoader::Reader::loadPointLight(const Node& node) {
-    checkKeys(node, "a point light", {"type", "position", "intensity", "falloff"});
-    const Vec3 position = readVec3(require(node, "position", "a point light"));
-    const Color intensity = readColor(require(node, "intensity", "a point light"));
-    scene_.addLight(
-        std::make_unique<PointLight>(position, intensity, readInverseSquareFalloff(node)));
-}
-
-void SceneLoader::Reader::loadDirectionalLight(const Node& node) {
-    checkKeys(node, "a directional light", {"type", "direction", "irradiance"});
-    const Vec3 direction = readDirection(require(node, "direction", "a directional light"));
-    const Color irradiance = readColor(require(node, "irradiance", "a directional light"));
-    scene_.addLight(std::make_unique<DirectionalLight>(direction, irradiance));
-}
-
-void SceneLoader::Reader::loadQuadLight(const Node& node) {
-    checkKeys(node, "a quad light", {"type", "corner", "edge1", "edge2", "radiance", "samples"});
-    const Vec3 corner = readVec3(require(node, "corner", "a quad light"));
-    const Vec3 edge1 = readVec3(require(node, "edge1", "a quad light"));
-    const Vec3 edge2 = readVec3(require(node, "edge2", "a quad light"));
+void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
+    checkKeys(node, what, {"type", "corner", "edge1", "edge2", "radiance", "samples"});
+    const Vec3 corner = readVec3(require(node, "corner", what));
+    const Vec3 edge1 = readVec3(require(node, "edge1", what));
+    const Vec3 edge2 = readVec3(require(node, "edge2", what));
     const auto area = static_cast<float>(length(cross(Vec3d(edge1), Vec3d(edge2))));
     if (!(area > 0) || !std::isfinite(area))
         fail(node["edge2"],
              "a quad light's \"edge1\" and \"edge2\" must be non-zero and not parallel "
              "(the quad has no area)");
-    const Color radiance = readColor(require(node, "radiance", "a quad light"));
+    const Color radiance = readColor(require(node, "radiance", what));
     auto surface = std::make_unique<Quad>(corner, edge1, edge2, emitterOf(radiance));
     auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
     addAreaLight(node, std::move(surface), std::move(light));
 }
 
-void SceneLoader::Reader::loadSphereLight(const Node& node) {
-    checkKeys(node, "a sphere light", {"type", "center", "radius", "radiance", "samples"});
-    const Vec3 center = readVec3(require(node, "center", "a sphere light"));
-    const float radius = readNumberAtLeast(require(node, "radius", "a sphere light"), 0, false);
-    const Color radiance = readColor(require(node, "radiance", "a sphere light"));
+void SceneLoader::Reader::loadSphereLight(const Node& node, const char* what) {
+    checkKeys(node, what, {"type", "center", "radius", "radiance", "samples"});
+    const Vec3 center = readVec3(require(node, "center", what));
+    const float radius = readNumberAtLeast(require(node, "radius", what), 0, false);
+    const Color radiance = readColor(require(node, "radiance", what));
     auto surface = std::make_unique<Sphere>(center, radius, emitterOf(radiance));
     auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
     addAreaLight(node, std::move(surface), std::move(light));
-}
-
-bool SceneLoader::Reader::readInverseSquareFalloff(const Node& light) const {
-    if (!light.has("falloff")) return true;
-    const std::string falloff = readString(light["falloff"]);
-    if (falloff == "none") return false;
-    if (falloff != "inverse_square")
-        fail(light["falloff"], "unknown falloff " + inQuotes(falloff) +
-                                   didYouMean(falloff, {"none", "inverse_square"}) +
-                                   "; expected \"inverse_square\" or \"none\"");
-    return true;
-}
-
-void SceneLoader::Reader::loadSpotLight(const Node& node) {
-    checkKeys(node, "a spot light",
-              {"type", "position", "direction", "look_at", "intensity", "cone_angle",
-               "cone_falloff", "falloff"});
-    const Vec3 position = readVec3(require(node, "position", "a spot light"));
-    Vec3 direction;
-    if (node.has("direction") && node.has("look_at"))
-        fail(node["look_at"], "a spot light takes \"direction\" or \"look_at\", not both");
-    if (node.has("direction")) {
-        direction = readDirection(node["direction"]);
-    } else if (node.has("look_at")) {
-        direction = readVec3(node["look_at"]) - position;
-        if (!(lengthSquared(direction) > 0) || !isFinite(normalize(direction)))
-            fail(node["look_at"], "a spot light's \"look_at\" must differ from its \"position\"");
-    } else {
-        fail(node, "a spot light needs \"direction\" or \"look_at\"");
-    }
-    const Color intensity = readColor(require(node, "intensity", "a spot light"));
-    // pbrt's defaults: a 30 degree cone fading over its outer 5 degrees.
-    float coneAngle = 30;
-    if (node.has("cone_angle")) {
-        coneAngle = readNumberAtLeast(node["cone_angle"], 0, false);
-        if (coneAngle > 180) fail(node["cone_angle"], "\"cone_angle\" must be at most 180 degrees");
-    }
-    float coneFalloff = std::min(5.0f, coneAngle);
-    if (node.has("cone_falloff")) {
-        coneFalloff = readNumberAtLeast(node["cone_falloff"], 0, true);
-        if (coneFalloff > coneAngle)
-            fail(node["cone_falloff"], "\"cone_falloff\" must not exceed \"cone_angle\"");
-    }
-    scene_.addLight(std::make_unique<SpotLight>(position, direction, intensity, coneAngle,
-                                                coneFalloff, readInverseSquareFalloff(node)));
 }
 
 const Material* SceneLoader::Reader::emitterOf(const Color& radiance) {

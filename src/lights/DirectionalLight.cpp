@@ -4,6 +4,11 @@
 
 namespace lancer {
 
+std::unique_ptr<Light> DirectionalLight::create(const Parameters& parameters) {
+    return std::make_unique<DirectionalLight>(parameters.direction("direction"),
+                                              parameters.color("irradiance"));
+}
+
 DirectionalLight::DirectionalLight(const Vec3& direction, const Color& irradiance)
     : towardsLight_(-normalize(direction)), irradiance_(irradiance) {}
 

@@ -1,6 +1,11 @@
 #pragma once
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "lights/Light.h"
+#include "util/Parameters.h"
 
 namespace lancer {
 
@@ -8,6 +13,9 @@ namespace lancer {
 // surface facing it.
 class DirectionalLight final : public Light {
 public:
+    // The scene file's "directional" light: direction, irradiance.
+    static std::vector<std::string> keys() { return {"direction", "irradiance"}; }
+    static std::unique_ptr<Light> create(const Parameters& parameters);
     DirectionalLight(const Vec3& direction, const Color& irradiance);
 
     LightSample sample(const Vec3& p, const Vec2& u) const override;

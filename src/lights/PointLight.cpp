@@ -4,6 +4,16 @@
 
 namespace lancer {
 
+bool PointLight::readInverseSquareFalloff(const Parameters& parameters) {
+    return !parameters.has("falloff") ||
+           parameters.choice("falloff", {"inverse_square", "none"}) == 0;
+}
+
+std::unique_ptr<Light> PointLight::create(const Parameters& parameters) {
+    return std::make_unique<PointLight>(parameters.point("position"), parameters.color("intensity"),
+                                        readInverseSquareFalloff(parameters));
+}
+
 PointLight::PointLight(const Vec3& position, const Color& intensity, bool inverseSquareFalloff)
     : position_(position), intensity_(intensity), inverseSquareFalloff_(inverseSquareFalloff) {}
 

@@ -1,6 +1,11 @@
 #pragma once
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "lights/Light.h"
+#include "util/Parameters.h"
 
 namespace lancer {
 
@@ -9,6 +14,11 @@ namespace lancer {
 class PointLight final : public Light {
 public:
     PointLight(const Vec3& position, const Color& intensity, bool inverseSquareFalloff = true);
+    // The scene file's "point" light: position, intensity, falloff.
+    static std::vector<std::string> keys() { return {"position", "intensity", "falloff"}; }
+    static std::unique_ptr<Light> create(const Parameters& parameters);
+    // The "falloff" key: "inverse_square" (the default) or "none".
+    static bool readInverseSquareFalloff(const Parameters& parameters);
 
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     bool isDelta() const override { return true; }

@@ -1,10 +1,47 @@
 #include "lights/SpotLight.h"
 
+#include <algorithm>
+
+#include "lights/PointLight.h"
+
 #include <cmath>
 
 #include "math/Float.h"
 
 namespace lancer {
+
+std::unique_ptr<Light> SpotLight::create(const Parameters& parameters) {
+    const Vec3 position = parameters.point("position");
+    Vec3 direction;
+    if (parameters.has("direction") && parameters.has("look_at"))
+        parameters.fail("look_at", "a spot light takes \"direction\" or \"look_at\", not both");
+    if (parameters.has("direction")) {
+        direction = parameters.direction("direction");
+    } else if (parameters.has("look_at")) {
+        direction = parameters.point("look_at") - position;
+        if (!(lengthSquared(direction) > 0) || !isFinite(normalize(direction)))
+            parameters.fail("look_at",
+                            "a spot light's \"look_at\" must differ from its \"position\"");
+    } else {
+        parameters.fail("direction", "a spot light needs \"direction\" or \"look_at\"");
+    }
+    const Color intensity = parameters.color("intensity");
+    // pbrt's defaults: a 30 degree cone fading over its outer 5 degrees.
+    float coneAngle = 30;
+    if (parameters.has("cone_angle")) {
+        coneAngle = parameters.numberAbove("cone_angle", 0, false);
+        if (coneAngle > 180)
+            parameters.fail("cone_angle", "\"cone_angle\" must be at most 180 degrees");
+    }
+    float coneFalloff = std::min(5.0f, coneAngle);
+    if (parameters.has("cone_falloff")) {
+        coneFalloff = parameters.numberAbove("cone_falloff", 0, true);
+        if (coneFalloff > coneAngle)
+            parameters.fail("cone_falloff", "\"cone_falloff\" must not exceed \"cone_angle\"");
+    }
+    return std::make_unique<SpotLight>(position, direction, intensity, coneAngle, coneFalloff,
+                                       PointLight::readInverseSquareFalloff(parameters));
+}
 
 namespace {
 

@@ -1,6 +1,11 @@
 #pragma once
 
+#include <memory>
+#include <string>
+#include <vector>
+
 #include "lights/Light.h"
+#include "util/Parameters.h"
 
 namespace lancer {
 
@@ -10,6 +15,12 @@ namespace lancer {
 // I(angle) without inverse-square falloff, as for point lights.
 class SpotLight final : public Light {
 public:
+    // The scene file's "spot" light.
+    static std::vector<std::string> keys() {
+        return {"position",   "direction",    "look_at", "intensity",
+                "cone_angle", "cone_falloff", "falloff"};
+    }
+    static std::unique_ptr<Light> create(const Parameters& parameters);
     SpotLight(const Vec3& position, const Vec3& direction, const Color& intensity,
               float coneAngleDegrees, float coneFalloffDegrees, bool inverseSquareFalloff = true);
 

@@ -1,6 +1,8 @@
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include "math/Color.h"
 #include "math/Vec3.h"
@@ -24,6 +26,9 @@ public:
     virtual Vec3 direction(const std::string& key) const = 0;
     virtual Color color(const std::string& key) const = 0;
     virtual bool flag(const std::string& key) const = 0;
+    // One of `options` (a string), as its index.
+    virtual std::size_t choice(const std::string& key,
+                               const std::vector<std::string>& options) const = 0;
     // An error at the key's value (or at the object, for a key it does not have).
     [[noreturn]] virtual void fail(const std::string& key, const std::string& message) const = 0;
 };

@@ -8,6 +8,16 @@
 
 namespace lancer {
 
+// Names for a message: "\"a\", \"b\" or \"c\"".
+inline std::string quotedNames(const std::vector<std::string>& names) {
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (i > 0) text += i + 1 == names.size() ? " or " : ", ";
+        text += "\"" + names[i] + "\"";
+    }
+    return text;
+}
+
 // A table of named entries: the one list of what can be created by name (integrators, filters,
 // shapes...), read by the scene loader, the command line and the error messages alike. Entry is
 // any struct with a `name` member convertible to std::string_view.
@@ -33,14 +43,7 @@ public:
     }
 
     // The names for a message: "\"a\", \"b\" or \"c\"".
-    std::string quotedNames() const {
-        std::string text;
-        for (std::size_t i = 0; i < entries_.size(); ++i) {
-            if (i > 0) text += i + 1 == entries_.size() ? " or " : ", ";
-            text += "\"" + std::string(entries_[i].name) + "\"";
-        }
-        return text;
-    }
+    std::string quotedNames() const { return lancer::quotedNames(names()); }
 
     const std::vector<Entry>& entries() const { return entries_; }
 
