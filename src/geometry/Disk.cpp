@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/PlaneCrossing.h"
+
 namespace lancer {
 
 Disk::Disk(const Vec3& center, const Vec3& normal, float radius, float innerRadius,
@@ -40,18 +42,11 @@ Bounds3 Disk::bounds() const {
 }
 
 std::optional<Hit> Disk::intersect(const Ray& ray, float tMax) const {
-    // In double precision, as the plane: the sign of t must be exact for a ray spawned just off
-    // the surface.
-    const Vec3d n(normal_);
-    const Vec3d d(ray.direction);
-    const double denominator = dot(n, d);
-    if (denominator == 0) return std::nullopt;  // parallel
-    const Vec3d o(ray.origin);
     const Vec3d c(center_);
-    const double t = dot(n, c - o) / denominator;
-    if (!(t > 0 && t < tMax)) return std::nullopt;
-    Vec3d q = o + t * d - c;
-    q -= dot(n, q) * n;  // back onto the plane
+    const std::optional<PlaneCrossing> crossing = PlaneCrossing::find(ray, c, Vec3d(normal_), tMax);
+    if (!crossing) return std::nullopt;
+    const double t = crossing->t;
+    const Vec3d& q = crossing->offset;
     const double r2 = dot(q, q);
     const double R = radius_, Ri = innerRadius_;
     if (r2 > R * R || r2 < Ri * Ri) return std::nullopt;

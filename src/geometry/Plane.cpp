@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "geometry/ConvexPolygon.h"
+#include "geometry/PlaneCrossing.h"
 
 namespace lancer {
 
@@ -31,20 +32,12 @@ Bounds3 Plane::bounds() const {
 }
 
 std::optional<Hit> Plane::intersect(const Ray& ray, float tMax) const {
-    // In double precision, for the same reason as the sphere: the sign of t must be exact for a
-    // ray spawned just off the plane.
-    const Vec3d n(normal_);
-    const Vec3d d(ray.direction);
-    const double denominator = dot(n, d);
-    if (denominator == 0) return std::nullopt;  // parallel: never meets the plane
-    const Vec3d o(ray.origin);
     const Vec3d p0(point_);
-    const double t = dot(n, p0 - o) / denominator;
-    if (!(t > 0 && t < tMax)) return std::nullopt;
-
-    Vec3d onPlane = o + t * d;
-    onPlane -= (dot(n, onPlane - p0) / dot(n, n)) * n;
-    const Vec3 p(onPlane);
+    const std::optional<PlaneCrossing> crossing =
+        PlaneCrossing::find(ray, p0, Vec3d(normal_), tMax);
+    if (!crossing) return std::nullopt;
+    const double t = crossing->t;
+    const Vec3 p(p0 + crossing->offset);
 
     Hit hit;
     hit.t = static_cast<float>(t);

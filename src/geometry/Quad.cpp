@@ -1,5 +1,7 @@
 #include "geometry/Quad.h"
 
+#include "geometry/PlaneCrossing.h"
+
 namespace lancer {
 
 Quad::Quad(const Vec3& corner, const Vec3& edge1, const Vec3& edge2, const Material* material)
@@ -19,23 +21,17 @@ Bounds3 Quad::bounds() const {
 }
 
 std::optional<Hit> Quad::intersect(const Ray& ray, float tMax) const {
-    // In double precision, as the plane: the sign of t must be exact for a ray spawned just off
-    // the surface, and the edge tests must not let rays slip between two quads sharing an edge.
+    // In double precision (PlaneCrossing), and so are the edge tests: they must not let rays slip
+    // between two quads sharing an edge.
     const Vec3d e1(edge1_), e2(edge2_);
     const Vec3d n = cross(e1, e2);
-    const Vec3d d(ray.direction);
-    const double denominator = dot(n, d);
-    if (denominator == 0) return std::nullopt;  // parallel
-    const Vec3d o(ray.origin);
     const Vec3d c(corner_);
-    const double t = dot(n, c - o) / denominator;
-    if (!(t > 0 && t < tMax)) return std::nullopt;
-
-    // The hit point relative to the corner, projected back onto the plane, then its coordinates
-    // along the edges: q = u e1 + v e2 gives q x e2 = u n and e1 x q = v n.
-    Vec3d q = o + t * d - c;
+    const std::optional<PlaneCrossing> crossing = PlaneCrossing::find(ray, c, n, tMax);
+    if (!crossing) return std::nullopt;
+    const double t = crossing->t;
+    // The point's coordinates along the edges: q = u e1 + v e2 gives q x e2 = u n, e1 x q = v n.
+    const Vec3d& q = crossing->offset;
     const double nn = dot(n, n);
-    q -= (dot(n, q) / nn) * n;
     const double u = dot(cross(q, e2), n) / nn;
     const double v = dot(cross(e1, q), n) / nn;
     if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) return std::nullopt;

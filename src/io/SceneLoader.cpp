@@ -51,6 +51,13 @@ std::string describe(const nlohmann::json& v) {
     return "an object";
 }
 
+// The keys every object of a kind takes, then those of its type.
+std::vector<std::string> withKeys(std::vector<std::string> common,
+                                  const std::vector<std::string>& own) {
+    common.insert(common.end(), own.begin(), own.end());
+    return common;
+}
+
 }  // namespace
 
 class SceneLoader::Reader {
@@ -471,10 +478,7 @@ std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
         fail(node["type"], "unknown material type " + inQuotes(type) +
                                didYouMean(type, materialTypes().names()) + "; expected " +
                                materialTypes().quotedNames());
-    std::vector<std::string> keys{"type"};
-    for (std::string& key : entry->keys())
-        keys.push_back(std::move(key));
-    checkKeys(node, "a material", keys);
+    checkKeys(node, "a material", withKeys({"type"}, entry->keys()));
     return entry->create(ObjectParameters(*this, node, "a material"));
 }
 
@@ -531,19 +535,13 @@ void SceneLoader::Reader::loadObject(const Node& node) {
 template <typename ShapeType>
 void SceneLoader::Reader::loadShape(const Node& node, const char* what,
                                     const std::optional<Transform>& transform) {
-    std::vector<std::string> keys{"type", "material", "transform"};
-    for (std::string& key : ShapeType::keys())
-        keys.push_back(std::move(key));
-    checkKeys(node, what, keys);
+    checkKeys(node, what, withKeys({"type", "material", "transform"}, ShapeType::keys()));
     addShape(ShapeType::create(ObjectParameters(*this, node, what), materialOf(node)), transform);
 }
 
 template <typename LightType>
 void SceneLoader::Reader::loadLight(const Node& node, const char* what) {
-    std::vector<std::string> keys{"type"};
-    for (std::string& key : LightType::keys())
-        keys.push_back(std::move(key));
-    checkKeys(node, what, keys);
+    checkKeys(node, what, withKeys({"type"}, LightType::keys()));
     scene_.addLight(LightType::create(ObjectParameters(*this, node, what)));
 }
 
