@@ -149,6 +149,11 @@ private:
                       std::unique_ptr<Light> light);
     const Material* materialOf(const Node& object);
 
+    // The entry of `table` that the string at `name` names; an unknown name is an error that
+    // lists the valid ones ("unknown light type \"area\"; expected ...").
+    template <typename Entry>
+    const Entry& lookUp(const Registry<Entry>& table, const Node& name,
+                        const std::string& what) const;
     [[noreturn]] void fail(const Node& node, const std::string& message) const;
     [[noreturn]] void failAtKey(const Node& node, const std::string& message) const;
     void warn(const Node& node, const std::string& message) const;
@@ -349,13 +354,8 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     if (node.has("spp")) settings.samplesPerPixel = readInt(node["spp"], 1);
     if (node.has("max_depth")) settings.maxDepth = readInt(node["max_depth"], 0);
     if (node.has("integrator")) {
-        const Node integrator = node["integrator"];
-        settings.integrator = readString(integrator);
-        const Registry<IntegratorEntry>& integrators = IntegratorRegistry::table();
-        if (!integrators.find(settings.integrator))
-            fail(integrator, "unknown integrator " + inQuotes(settings.integrator) +
-                                 didYouMean(settings.integrator, integrators.names()) +
-                                 "; expected " + integrators.quotedNames());
+        settings.integrator =
+            lookUp(IntegratorRegistry::table(), node["integrator"], "integrator").name;
     }
     if (node.has("filter")) loadFilter(node["filter"]);
     if (node.has("adaptive")) loadAdaptive(node, node["adaptive"]);
@@ -377,11 +377,7 @@ void SceneLoader::Reader::loadFilter(const Node& node) {
                        describe(node.value));
     }
     const Node type = node.value.is_object() ? require(node, "type", "\"filter\"") : node;
-    filter.type = readString(type);
-    if (!Filter::types().find(filter.type))
-        fail(type, "unknown filter " + inQuotes(filter.type) +
-                       didYouMean(filter.type, Filter::types().names()) + "; expected " +
-                       Filter::types().quotedNames());
+    filter.type = lookUp(Filter::types(), type, "filter").name;
 }
 
 void SceneLoader::Reader::loadAdaptive(const Node& render, const Node& node) {
@@ -471,15 +467,11 @@ void SceneLoader::Reader::loadMaterials(const Node& node) {
 
 std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
     requireObject(node, "material " + node.name);
-    std::string type = "blinn_phong";
-    if (node.has("type")) type = readString(node["type"]);
-    const MaterialType* entry = materialTypes().find(type);
-    if (!entry)
-        fail(node["type"], "unknown material type " + inQuotes(type) +
-                               didYouMean(type, materialTypes().names()) + "; expected " +
-                               materialTypes().quotedNames());
-    checkKeys(node, "a material", withKeys({"type"}, entry->keys()));
-    return entry->create(ObjectParameters(*this, node, "a material"));
+    const MaterialType& entry = node.has("type")
+                                    ? lookUp(materialTypes(), node["type"], "material type")
+                                    : *materialTypes().find("blinn_phong");
+    checkKeys(node, "a material", withKeys({"type"}, entry.keys()));
+    return entry.create(ObjectParameters(*this, node, "a material"));
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node) {
@@ -520,16 +512,11 @@ const Material* SceneLoader::Reader::materialOf(const Node& object) {
 
 void SceneLoader::Reader::loadObject(const Node& node) {
     requireObject(node, "an object");
-    const Node typeNode = require(node, "type", "an object");
-    const std::string type = readString(typeNode);
-    const ObjectType* entry = objectTypes().find(type);
-    if (!entry)
-        fail(typeNode, "unknown object type " + inQuotes(type) +
-                           didYouMean(type, objectTypes().names()) + "; expected " +
-                           objectTypes().quotedNames());
+    const ObjectType& entry =
+        lookUp(objectTypes(), require(node, "type", "an object"), "object type");
     std::optional<Transform> transform;
     if (node.has("transform")) transform = readTransform(node["transform"]);
-    (this->*entry->load)(node, entry->what, transform);
+    (this->*entry.load)(node, entry.what, transform);
 }
 
 template <typename ShapeType>
@@ -682,14 +669,8 @@ Transform SceneLoader::Reader::readTransform(const Node& node) const {
 
 void SceneLoader::Reader::loadLight(const Node& node) {
     requireObject(node, "a light");
-    const Node typeNode = require(node, "type", "a light");
-    const std::string type = readString(typeNode);
-    const LightType* entry = lightTypes().find(type);
-    if (!entry)
-        fail(typeNode, "unknown light type " + inQuotes(type) +
-                           didYouMean(type, lightTypes().names()) + "; expected " +
-                           lightTypes().quotedNames());
-    (this->*entry->load)(node, entry->what);
+    const LightType& entry = lookUp(lightTypes(), require(node, "type", "a light"), "light type");
+    (this->*entry.load)(node, entry.what);
 }
 
 void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
@@ -738,6 +719,17 @@ void SceneLoader::Reader::addAreaLight(const Node& node, std::unique_ptr<Shape> 
 }
 
 // --- reading values, with messages that say where and what ---
+
+template <typename Entry>
+const Entry& SceneLoader::Reader::lookUp(const Registry<Entry>& table, const Node& name,
+                                         const std::string& what) const {
+    const std::string text = readString(name);
+    const Entry* entry = table.find(text);
+    if (!entry)
+        fail(name, "unknown " + what + " " + inQuotes(text) + didYouMean(text, table.names()) +
+                       "; expected " + table.quotedNames());
+    return *entry;
+}
 
 void SceneLoader::Reader::fail(const Node& node, const std::string& message) const {
     throw InputError(doc_.fileName(), doc_.valueLocation(node.pointer), message);
