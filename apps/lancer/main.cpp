@@ -165,6 +165,9 @@ int run(const Options& options) {
     if (options.threads > 0)
         threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
                             static_cast<std::size_t>(options.threads));
+    // Whitted ray tracing recurses once per bounce: as much stack on the workers as the main
+    // thread has (oneTBB's default is half of it).
+    const tbb::global_control stackSize(tbb::global_control::thread_stack_size, 8u << 20);
     const fs::path output = options.output.empty()
                                 ? fs::path(options.scene).replace_extension(".png")
                                 : fs::path(options.output);
