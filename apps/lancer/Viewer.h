@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "ViewerEvent.h"
 #include "image/Image.h"
 #include "render/Renderer.h"
 
@@ -14,20 +15,6 @@ struct SDL_Texture;
 struct SDL_Window;
 
 namespace lancer {
-
-// What the user did in the window.
-struct ViewerEvent {
-    enum class Kind {
-        Close,  // Esc, or the window closed
-        Save,   // S
-        Drag,   // the mouse moved with its left button down: dx, dy
-        Zoom,   // the wheel turned: steps, positive away from the user (zoom in)
-    };
-    Kind kind;
-    // For Drag: the move as fractions of the window's width and height, x right, y down.
-    float dx = 0, dy = 0;
-    int steps = 0;
-};
 
 // A window (SDL2) showing an image while something computes it. The image and the status in the
 // title can be changed from any thread (a renderer's workers); the window itself belongs to the

@@ -4,17 +4,11 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/TessellationRequest.h"
 #include "math/Bounds3.h"
 #include "math/Vec3.h"
 
 namespace lancer {
-
-// What a tessellation is for: radiosity cuts the facets into patches of about patchSize, and
-// infinite shapes are cut to the box that matters.
-struct TessellationRequest {
-    float patchSize;
-    Bounds3 clipBox;
-};
 
 // A shape's surface as flat triangles (for radiosity), each counter-clockwise seen from the
 // shape's front, with the primitive it belongs to.

@@ -1,33 +1,15 @@
 #pragma once
 
-#include <functional>
 #include <memory>
-#include <optional>
 
-#include "radiosity/RadiositySolution.h"
+#include "integrators/IntegratorEntry.h"
+#include "integrators/IntegratorSetup.h"
 #include "render/Integrator.h"
 #include "util/Registry.h"
 
 namespace lancer {
 
-class RadiositySolver;
 class Scene;
-
-// What an integrator may need from the program beyond the scene.
-struct IntegratorSetup {
-    // Gives the radiosity integrator its solution, from the solver made for the scene: solved
-    // (with progress shown, and stoppable), or loaded from a file. Nothing: stopped before the
-    // end. When empty, the solver solves without reporting.
-    std::function<std::optional<RadiositySolution>(RadiositySolver&)> radiositySolution;
-};
-
-// An integrator the scene's "integrator" key and --integrator can name.
-struct IntegratorEntry {
-    const char* name;
-    const char* description;  // for --help and the documentation
-    // Null when the setup stopped it (an interrupted radiosity solve).
-    std::unique_ptr<Integrator> (*create)(const Scene& scene, const IntegratorSetup& setup);
-};
 
 // The integrators, by name: one registration line each.
 class IntegratorRegistry {

@@ -9,19 +9,9 @@
 #include "accel/Bvh.h"
 #include "math/Color.h"
 #include "math/Vec3.h"
+#include "radiosity/RadiosityStatistics.h"
 
 namespace lancer {
-
-// What a solve did, for the report lancer prints.
-struct RadiosityStatistics {
-    std::uint64_t patches = 0;
-    std::uint64_t elements = 0;  // leaves: what the image shows
-    std::uint64_t shots = 0;     // iterations of progressive refinement
-    double initialPower = 0;     // W (mean over r, g, b): emitted, and received from lights
-    double residualPower = 0;    // W left unshot at the end
-    double seconds = 0;
-    std::uint64_t rays = 0;
-};
 
 // A solved radiosity solution, independent of the view: the leaf elements with, at each of their
 // corners, the irradiance on both sides, averaged over the elements sharing the corner, for

@@ -5,14 +5,9 @@
 #include "math/Distribution1D.h"
 #include "math/Vec2.h"
 #include "render/Filter.h"
+#include "render/FilterSample.h"
 
 namespace lancer {
-
-// A sample position for the pixel and the weight its radiance gets.
-struct FilterSample {
-    Vec2 offset;   // from the pixel centre, in pixels
-    float weight;  // filter(offset) / pdf(offset): about 1, negative in a negative lobe
-};
 
 // Filter importance sampling (as pbrt-v4): sample offsets are drawn with a density proportional
 // to |filter|, and weighted by filter / density, so that sum(w L) / sum(w) over a pixel's own

@@ -1,15 +1,11 @@
 #pragma once
 
+#include "scene/SourceLocation.h"
+
 #include <stdexcept>
 #include <string>
 
 namespace lancer {
-
-// Where in a text file something stands; line and column count from 1 (0: unknown).
-struct SourceLocation {
-    int line = 0;
-    int column = 0;
-};
 
 // Bad input from the user (scene, model, texture): reported as one line,
 // "file:line:col: error: message", and exit status 2.

@@ -1,0 +1,30 @@
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+#include "render/FinishedTile.h"
+#include "render/PixelWindow.h"
+
+namespace lancer {
+
+struct RenderOptions {
+    int threads = 0;                            // 0: all cores
+    std::uint64_t seed = 0;                     // selects the sample patterns
+    std::optional<PixelWindow> crop;            // render only these pixels
+    const std::atomic<bool>* cancel = nullptr;  // set to stop the workers early
+    // Coarse passes before the image, for a live view: a pass of block size k traces one ray
+    // through the centre of each k x k block and fills the block with it. None by default; they
+    // never change the image.
+    std::vector<int> previewBlockSizes;
+    // Render the preview passes only, none of the image's tiles (a live view's quick look at
+    // something that will change, such as a radiosity solution while it is solved).
+    bool previewOnly = false;
+    // Called under a lock after each tile, preview tiles included, in the order they finish;
+    // every tile of a pass is reported before any of the next pass.
+    std::function<void(const FinishedTile&)> onTileDone;
+};
+
+}  // namespace lancer

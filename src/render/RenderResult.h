@@ -1,0 +1,16 @@
+#pragma once
+
+#include "image/Image.h"
+#include "render/RenderCounters.h"
+
+namespace lancer {
+
+struct RenderResult {
+    Image film;
+    bool interrupted = false;   // cancelled: only the tiles finished before are in the film
+    RenderCounters counters{};  // rays traced, samples taken, NaN or infinite samples dropped
+    double seconds = 0;
+    int threads = 0;
+};
+
+}  // namespace lancer
