@@ -18,7 +18,7 @@ Bounds3 Sphere::bounds() const {
     return {center_ - Vec3(radius_), center_ + Vec3(radius_)};
 }
 
-std::optional<Hit> Sphere::intersect(const Ray& ray, float tMax) const {
+std::optional<double> Sphere::nearestT(const Ray& ray, float tMax) const {
     // Solved in double precision: the roots, and so the side of the surface a spawned ray starts
     // on, are then exact to far below the float error bound used to offset spawned rays.
     const Vec3d o = Vec3d(ray.origin) - Vec3d(center_);
@@ -40,9 +40,20 @@ std::optional<Hit> Sphere::intersect(const Ray& ray, float tMax) const {
     if (t0 >= tMax || t1 <= 0) return std::nullopt;
     const double t = t0 > 0 ? t0 : t1;
     if (t >= tMax) return std::nullopt;
+    return t;
+}
 
+bool Sphere::occluded(const Ray& ray, float tMax) const {
+    return nearestT(ray, tMax).has_value();
+}
+
+std::optional<Hit> Sphere::intersect(const Ray& ray, float tMax) const {
+    const std::optional<double> found = nearestT(ray, tMax);
+    if (!found) return std::nullopt;
+    const double t = *found;
+    const double r = radius_;
     // Project the point back onto the surface; what remains is the rounding to float.
-    Vec3d local = o + t * d;
+    Vec3d local = Vec3d(ray.origin) - Vec3d(center_) + t * Vec3d(ray.direction);
     local *= r / length(local);
     const Vec3 p = Vec3(Vec3d(center_) + local);
     const Vec3 n = Vec3(local / r);
@@ -59,9 +70,13 @@ std::optional<Hit> Sphere::intersect(const Ray& ray, float tMax) const {
     if (phi < 0) phi += 2 * kPi;
     const float cosLatitude = std::sqrt(std::max(0.0f, n.x * n.x + n.z * n.z));
     hit.uv = {phi / (2 * kPi), 0.5f + std::asin(clamp(n.y, -1.0f, 1.0f)) / kPi};
-    const float sinPhi = std::sin(phi), cosPhi = std::cos(phi);
-    hit.dpdu = (2 * kPi * radius_) * Vec3(-cosLatitude * sinPhi, 0, -cosLatitude * cosPhi);
-    hit.dpdv = (kPi * radius_) * Vec3(-n.y * cosPhi, cosLatitude, n.y * sinPhi);
+    // dp/du = 2 pi r (-cos lambda sin phi, 0, -cos lambda cos phi) = 2 pi r (n.z, 0, -n.x), and
+    // dp/dv = pi r (-sin lambda cos phi, cos lambda, sin lambda sin phi): no trigonometry needed
+    // but at the poles, where phi is 0.
+    hit.dpdu = (2 * kPi * radius_) * Vec3(n.z, 0, -n.x);
+    hit.dpdv = cosLatitude > 0 ? (kPi * radius_) * Vec3(-n.y * n.x / cosLatitude, cosLatitude,
+                                                        -n.y * n.z / cosLatitude)
+                               : (kPi * radius_) * Vec3(-n.y, 0, 0);
     hit.shape = this;
     hit.primitive = 0;
     hit.material = material();

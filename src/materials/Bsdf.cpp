@@ -9,15 +9,6 @@
 
 namespace lancer {
 
-namespace {
-
-// Highlights: neither the diffuse light nor the delta lobes' rays.
-bool isGlossy(const BsdfLobe& lobe) {
-    return !lobe.isDelta() && !lobe.isDiffuse();
-}
-
-}  // namespace
-
 Bsdf::Bsdf(const Material& material, const Hit& hit, Weights weights)
     : frame_(Frame::fromZ(hit.ns)), ng_(hit.ng) {
     material.addLobes(hit, *this);
@@ -25,11 +16,12 @@ Bsdf::Bsdf(const Material& material, const Hit& hit, Weights weights)
 }
 
 void Bsdf::weighLobes(Weights weights) {
+    if (weights == Weights::AsGiven) return;  // Whitted and radiosity: nothing is sampled
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
         sum += lobes_[i]->weight();
     const float largest = sum.maxComponent();
-    if (weights == Weights::EnergyConserving && largest > 1)
+    if (largest > 1)
         for (std::size_t i = 0; i < lobeCount_; ++i)
             lobes_[i]->scaleWeight(1 / largest);
     float total = 0;
@@ -43,7 +35,7 @@ void Bsdf::weighLobes(Weights weights) {
 
 bool Bsdf::hasNonDeltaLobe() const {
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (probabilities_[i] > 0 && !lobes_[i]->isDelta()) return true;
+        if (!isDelta_[i]) return true;
     return false;
 }
 
@@ -52,7 +44,7 @@ Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (probabilities_[i] > 0 && !lobes_[i]->isDelta()) sum += lobes_[i]->f(woLocal, wiLocal);
+        if (!isDelta_[i]) sum += lobes_[i]->f(woLocal, wiLocal);
     return sum;
 }
 
@@ -60,8 +52,7 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     float sum = 0;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (probabilities_[i] > 0 && !lobes_[i]->isDelta())
-            sum += probabilities_[i] * lobes_[i]->pdf(woLocal, wiLocal);
+        if (!isDelta_[i]) sum += probabilities_[i] * lobes_[i]->pdf(woLocal, wiLocal);
     return sum;
 }
 
@@ -98,19 +89,20 @@ Color Bsdf::localResponse(const Vec3& wo, const Vec3& wi, bool front) const {
     const float cosThetaH = dot(n, normalize(wi + wo));
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        sum += lobes_[i]->localResponse(cosThetaL, cosThetaH);
+        if (!isDelta_[i]) sum += lobes_[i]->localResponse(cosThetaL, cosThetaH);
     return sum;
 }
 
 std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
                                std::array<SpecularRay, kMaxSpecularRays>& rays) const {
+    if (!hasDeltaLobe_) return 0;
     const Vec3 n = shadingNormal(front);
     const float cosThetaO = std::min(1.0f, std::abs(dot(wo, n)));
     // Refractions from rays[1] on, behind the reflection's place.
     Color reflected;
     std::size_t count = 1;
     for (std::size_t i = 0; i < lobeCount_; ++i) {
-        if (!lobes_[i]->isDelta()) continue;
+        if (!isDelta_[i]) continue;
         const SpecularSplit split = lobes_[i]->specularSplit(cosThetaO, front);
         reflected += split.reflected;
         if (split.refracted.isBlack()) continue;
@@ -128,13 +120,13 @@ std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
 Color Bsdf::diffuseReflectance() const {
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (lobes_[i]->isDiffuse()) sum += lobes_[i]->weight();
+        if (isDiffuse_[i]) sum += lobes_[i]->weight();
     return sum;
 }
 
 bool Bsdf::hasGlossyLobe() const {
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (isGlossy(*lobes_[i])) return true;
+        if (!isDelta_[i] && !isDiffuse_[i]) return true;
     return false;
 }
 
@@ -142,7 +134,7 @@ Color Bsdf::glossyF(const Vec3& wo, const Vec3& wi) const {
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (isGlossy(*lobes_[i])) sum += lobes_[i]->f(woLocal, wiLocal);
+        if (!isDelta_[i] && !isDiffuse_[i]) sum += lobes_[i]->f(woLocal, wiLocal);
     return sum;
 }
 

@@ -40,7 +40,7 @@ public:
 
     enum class Weights {
         EnergyConserving,  // the path tracer's
-        AsGiven,           // the scene format's equation (Whitted, radiosity)
+        AsGiven,           // the scene format's equation (Whitted, radiosity): not for sample()
     };
 
     Bsdf(const Material& material, const Hit& hit, Weights weights = Weights::EnergyConserving);
@@ -93,7 +93,8 @@ private:
         std::byte bytes[kLobeSize];
     };
 
-    // Divides the weights for energy conservation if asked and sets the lobes' probabilities.
+    // For EnergyConserving weights: divides them if they sum to more than 1 and sets the lobes'
+    // probabilities.
     void weighLobes(Weights weights);
 
     // Whether wo and wi lie on the sides of the geometric surface that a reflection needs.
@@ -106,7 +107,11 @@ private:
     std::size_t lobeCount_ = 0;
     std::array<LobeStorage, kMaxLobes> storage_;
     std::array<BsdfLobe*, kMaxLobes> lobes_{};
-    std::array<float, kMaxLobes> probabilities_{};  // of choosing each lobe
+    // What each lobe is, asked once when it is added rather than at every light sample.
+    std::array<bool, kMaxLobes> isDelta_{}, isDiffuse_{};
+    bool hasDeltaLobe_ = false;
+    // Of choosing each lobe, for sample() and pdf(): set for EnergyConserving weights only.
+    std::array<float, kMaxLobes> probabilities_{};
 };
 
 template <class Lobe, class... Args>
@@ -117,7 +122,11 @@ void Bsdf::add(Args&&... args) {
     static_assert(std::is_trivially_destructible_v<Lobe>, "the Bsdf never destroys its lobes");
     if (lobeCount_ == kMaxLobes) throw std::length_error("more lobes than Bsdf::kMaxLobes");
     Lobe* lobe = ::new (storage_[lobeCount_].bytes) Lobe(std::forward<Args>(args)...);
-    if (!lobe->weight().isBlack()) lobes_[lobeCount_++] = lobe;
+    if (lobe->weight().isBlack()) return;
+    isDelta_[lobeCount_] = lobe->isDelta();
+    isDiffuse_[lobeCount_] = lobe->isDiffuse();
+    hasDeltaLobe_ |= isDelta_[lobeCount_];
+    lobes_[lobeCount_++] = lobe;
 }
 
 }  // namespace lancer

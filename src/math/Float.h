@@ -1,6 +1,8 @@
 #pragma once
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
@@ -22,11 +24,19 @@ constexpr float gamma(int n) {
            (1.0f - static_cast<float>(n) * kMachineEpsilon);
 }
 
+// The next float above (below) v: std::nextafter towards +infinity (-infinity), by stepping the
+// bit pattern (pbrt's NextFloatUp), inline where ray origins are offset.
 inline float nextFloatUp(float v) {
-    return std::nextafter(v, kInfinity);
+    if (std::isinf(v) && v > 0) return v;
+    if (v == 0) v = 0.0f;  // -0 steps up as +0 does
+    const auto bits = std::bit_cast<std::uint32_t>(v);
+    return std::bit_cast<float>(v >= 0 ? bits + 1 : bits - 1);
 }
 inline float nextFloatDown(float v) {
-    return std::nextafter(v, -kInfinity);
+    if (std::isinf(v) && v < 0) return v;
+    if (v == 0) v = -0.0f;  // +0 steps down as -0 does
+    const auto bits = std::bit_cast<std::uint32_t>(v);
+    return std::bit_cast<float>(v > 0 ? bits - 1 : bits + 1);
 }
 
 constexpr float radians(float degrees) {
