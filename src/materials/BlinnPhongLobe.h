@@ -17,9 +17,9 @@ namespace lancer {
 // wo and wi.
 class BlinnPhongLobe final : public BsdfLobe {
 public:
-    BlinnPhongLobe(const Color& ks, float exponent) : BsdfLobe(ks), exponent_(exponent) {}
+    BlinnPhongLobe(const Color& ks, float exponent)
+        : BsdfLobe(ks, Kind::Glossy), exponent_(exponent) {}
 
-    bool isDelta() const override { return false; }
     Color f(const Vec3& wo, const Vec3& wi) const override;
     float pdf(const Vec3& wo, const Vec3& wi) const override;
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;

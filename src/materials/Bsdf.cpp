@@ -35,7 +35,7 @@ void Bsdf::weighLobes(Weights weights) {
 
 bool Bsdf::hasNonDeltaLobe() const {
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!isDelta_[i]) return true;
+        if (!lobes_[i]->isDelta()) return true;
     return false;
 }
 
@@ -44,7 +44,7 @@ Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!isDelta_[i]) sum += lobes_[i]->f(woLocal, wiLocal);
+        if (!lobes_[i]->isDelta()) sum += lobes_[i]->f(woLocal, wiLocal);
     return sum;
 }
 
@@ -52,7 +52,7 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     float sum = 0;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!isDelta_[i]) sum += probabilities_[i] * lobes_[i]->pdf(woLocal, wiLocal);
+        if (!lobes_[i]->isDelta()) sum += probabilities_[i] * lobes_[i]->pdf(woLocal, wiLocal);
     return sum;
 }
 
@@ -89,7 +89,7 @@ Color Bsdf::localResponse(const Vec3& wo, const Vec3& wi, bool front) const {
     const float cosThetaH = dot(n, normalize(wi + wo));
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!isDelta_[i]) sum += lobes_[i]->localResponse(cosThetaL, cosThetaH);
+        if (!lobes_[i]->isDelta()) sum += lobes_[i]->localResponse(cosThetaL, cosThetaH);
     return sum;
 }
 
@@ -102,7 +102,7 @@ std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
     Color reflected;
     std::size_t count = 1;
     for (std::size_t i = 0; i < lobeCount_; ++i) {
-        if (!isDelta_[i]) continue;
+        if (!lobes_[i]->isDelta()) continue;
         const SpecularSplit split = lobes_[i]->specularSplit(cosThetaO, front);
         reflected += split.reflected;
         if (split.refracted.isBlack()) continue;
@@ -120,13 +120,13 @@ std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
 Color Bsdf::diffuseReflectance() const {
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (isDiffuse_[i]) sum += lobes_[i]->weight();
+        if (lobes_[i]->isDiffuse()) sum += lobes_[i]->weight();
     return sum;
 }
 
 bool Bsdf::hasGlossyLobe() const {
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!isDelta_[i] && !isDiffuse_[i]) return true;
+        if (!lobes_[i]->isDelta() && !lobes_[i]->isDiffuse()) return true;
     return false;
 }
 
@@ -134,7 +134,7 @@ Color Bsdf::glossyF(const Vec3& wo, const Vec3& wi) const {
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!isDelta_[i] && !isDiffuse_[i]) sum += lobes_[i]->f(woLocal, wiLocal);
+        if (!lobes_[i]->isDelta() && !lobes_[i]->isDiffuse()) sum += lobes_[i]->f(woLocal, wiLocal);
     return sum;
 }
 

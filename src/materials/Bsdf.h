@@ -107,8 +107,6 @@ private:
     std::size_t lobeCount_ = 0;
     std::array<LobeStorage, kMaxLobes> storage_;
     std::array<BsdfLobe*, kMaxLobes> lobes_{};
-    // What each lobe is, asked once when it is added rather than at every light sample.
-    std::array<bool, kMaxLobes> isDelta_{}, isDiffuse_{};
     bool hasDeltaLobe_ = false;
     // Of choosing each lobe, for sample() and pdf(): set for EnergyConserving weights only.
     std::array<float, kMaxLobes> probabilities_{};
@@ -123,9 +121,7 @@ void Bsdf::add(Args&&... args) {
     if (lobeCount_ == kMaxLobes) throw std::length_error("more lobes than Bsdf::kMaxLobes");
     Lobe* lobe = ::new (storage_[lobeCount_].bytes) Lobe(std::forward<Args>(args)...);
     if (lobe->weight().isBlack()) return;
-    isDelta_[lobeCount_] = lobe->isDelta();
-    isDiffuse_[lobeCount_] = lobe->isDiffuse();
-    hasDeltaLobe_ |= isDelta_[lobeCount_];
+    hasDeltaLobe_ |= lobe->isDelta();
     lobes_[lobeCount_++] = lobe;
 }
 

@@ -16,11 +16,15 @@ namespace lancer {
 // destroys them: they must be trivially destructible, hence the protected, non-virtual destructor.
 class BsdfLobe {
 public:
-    // A delta lobe (mirror, smooth glass) scatters into single directions: f() and pdf() are 0
-    // and only sample() finds them.
-    virtual bool isDelta() const = 0;
-    // An ideal diffuse lobe, f = weight / pi: the light radiosity computes.
-    virtual bool isDiffuse() const { return false; }
+    // What a lobe is, fixed by its class: asked at every hit, so kept as data, not virtual.
+    enum class Kind {
+        Diffuse,  // ideal diffuse, f = weight / pi: the light radiosity computes
+        Glossy,   // any other lobe with a density: highlights
+        Delta,    // scatters into single directions (mirror, smooth glass): f() and pdf() are 0
+                  // and only sample() finds them
+    };
+    bool isDelta() const { return kind_ == Kind::Delta; }
+    bool isDiffuse() const { return kind_ == Kind::Diffuse; }
     virtual Color f(const Vec3& wo, const Vec3& wi) const = 0;
     virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
     // A direction for wo from u in [0,1)^2, or none when the lobe has nothing to give.
@@ -40,13 +44,14 @@ public:
     void scaleWeight(float s) { weight_ *= s; }
 
 protected:
-    explicit BsdfLobe(const Color& weight) : weight_(weight) {}
+    BsdfLobe(const Color& weight, Kind kind) : weight_(weight), kind_(kind) {}
     BsdfLobe(const BsdfLobe&) = default;
     BsdfLobe& operator=(const BsdfLobe&) = default;
     ~BsdfLobe() = default;
 
 private:
     Color weight_;
+    Kind kind_;
 };
 
 }  // namespace lancer

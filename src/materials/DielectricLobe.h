@@ -11,9 +11,8 @@ namespace lancer {
 // denser medium), as in pbrt and Mitsuba.
 class DielectricLobe final : public BsdfLobe {
 public:
-    DielectricLobe(const Color& weight, float ior) : BsdfLobe(weight), ior_(ior) {}
+    DielectricLobe(const Color& weight, float ior) : BsdfLobe(weight, Kind::Delta), ior_(ior) {}
 
-    bool isDelta() const override { return true; }
     Color f(const Vec3&, const Vec3&) const override { return Color(0); }
     float pdf(const Vec3&, const Vec3&) const override { return 0; }
     // u.x chooses between reflection and refraction.

@@ -8,10 +8,8 @@ namespace lancer {
 // two-sided); sampled by cos(theta).
 class LambertianLobe final : public BsdfLobe {
 public:
-    explicit LambertianLobe(const Color& albedo) : BsdfLobe(albedo) {}
+    explicit LambertianLobe(const Color& albedo) : BsdfLobe(albedo, Kind::Diffuse) {}
 
-    bool isDelta() const override { return false; }
-    bool isDiffuse() const override { return true; }
     Color f(const Vec3& wo, const Vec3& wi) const override;
     float pdf(const Vec3& wo, const Vec3& wi) const override;
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;

@@ -8,9 +8,8 @@ namespace lancer {
 // side.
 class MirrorLobe final : public BsdfLobe {
 public:
-    explicit MirrorLobe(const Color& reflectance) : BsdfLobe(reflectance) {}
+    explicit MirrorLobe(const Color& reflectance) : BsdfLobe(reflectance, Kind::Delta) {}
 
-    bool isDelta() const override { return true; }
     Color f(const Vec3&, const Vec3&) const override { return Color(0); }
     float pdf(const Vec3&, const Vec3&) const override { return 0; }
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
