@@ -83,7 +83,7 @@ void Mesh::prefetchPack(std::uint32_t pack) const {
     prefetch(first + sizeof(TrianglePack) - 1);
 }
 
-std::optional<Hit> Mesh::intersect(const Ray& ray, float tMax) const {
+std::optional<SurfaceCrossing> Mesh::cross(const Ray& ray, float tMax) const {
     const TriangleIntersector intersector(ray);
     if (!intersector.canHit()) return std::nullopt;
     // Only barycentrics and t during traversal; the hit record is filled once, for the nearest.
@@ -105,7 +105,13 @@ std::optional<Hit> Mesh::intersect(const Ray& ray, float tMax) const {
     };
     const auto prefetchLeaf = [&](std::uint32_t firstPack) { prefetchPack(firstPack); };
     if (!bvh_.intersect(ray, tMax, intersectLeaf, prefetchLeaf)) return std::nullopt;
-    Hit hit = Triangle::makeHit(triangles_, nearestIndex, nearest);
+    return SurfaceCrossing{nearest.t, nearest.t, nearestIndex, nearest.b0, nearest.b1, nearest.b2};
+}
+
+Hit Mesh::record(const Ray&, const SurfaceCrossing& crossing) const {
+    Hit hit = Triangle::makeHit(
+        triangles_, crossing.primitive,
+        {crossing.b0, crossing.b1, crossing.b2, static_cast<float>(crossing.tShape)});
     hit.shape = this;
     return hit;
 }

@@ -16,7 +16,8 @@ class Mesh final : public Shape {
 public:
     explicit Mesh(TriangleMesh triangles);
 
-    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
+    std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
+    Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     bool occluded(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override { return bvh_.bounds(); }
     bool emitsOnBothSides() const override { return false; }

@@ -15,7 +15,7 @@ Disk::Disk(const Vec3& center, const Vec3& normal, float radius, float innerRadi
       radius_(radius),
       innerRadius_(innerRadius) {
     coordinateSystem(normal_, tangent_, bitangent_);
-    if (dot(cross(tangent_, bitangent_), normal_) < 0) std::swap(tangent_, bitangent_);
+    if (dot(lancer::cross(tangent_, bitangent_), normal_) < 0) std::swap(tangent_, bitangent_);
 }
 
 std::unique_ptr<Shape> Disk::create(const Parameters& parameters, const Material* material) {
@@ -41,15 +41,22 @@ Bounds3 Disk::bounds() const {
     return {box.min - slack, box.max + slack};
 }
 
-std::optional<Hit> Disk::intersect(const Ray& ray, float tMax) const {
-    const Vec3d c(center_);
-    const std::optional<PlaneCrossing> crossing = PlaneCrossing::find(ray, c, Vec3d(normal_), tMax);
+std::optional<SurfaceCrossing> Disk::cross(const Ray& ray, float tMax) const {
+    const std::optional<PlaneCrossing> crossing =
+        PlaneCrossing::find(ray, Vec3d(center_), Vec3d(normal_), tMax);
     if (!crossing) return std::nullopt;
-    const double t = crossing->t;
-    const Vec3d& q = crossing->offset;
-    const double r2 = dot(q, q);
+    const double r2 = dot(crossing->offset, crossing->offset);
     const double R = radius_, Ri = innerRadius_;
     if (r2 > R * R || r2 < Ri * Ri) return std::nullopt;
+    return SurfaceCrossing{crossing->t, crossing->t};
+}
+
+Hit Disk::record(const Ray& ray, const SurfaceCrossing& crossing) const {
+    const Vec3d c(center_);
+    const double t = crossing.tShape;
+    const Vec3d q = PlaneCrossing::at(ray, c, Vec3d(normal_), t).offset;
+    const double r2 = dot(q, q);
+    const double R = radius_, Ri = innerRadius_;
 
     const double r = std::sqrt(r2);
     const double x = dot(q, Vec3d(tangent_)), y = dot(q, Vec3d(bitangent_));

@@ -24,7 +24,8 @@ public:
     }
     static std::unique_ptr<Shape> create(const Parameters& parameters, const Material* material);
 
-    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
+    std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
+    Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override;
     float area(std::uint32_t primitive) const override;
     std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const override;

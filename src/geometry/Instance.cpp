@@ -48,12 +48,19 @@ bool Instance::occluded(const Ray& ray, float tMax) const {
     return shape_->occluded(local, tMax - shift);
 }
 
-std::optional<Hit> Instance::intersect(const Ray& ray, float tMax) const {
+std::optional<SurfaceCrossing> Instance::cross(const Ray& ray, float tMax) const {
     float shift;
     const Ray local = toObject(ray, shift);
-    std::optional<Hit> found = shape_->intersect(local, tMax - shift);
-    if (!found) return std::nullopt;
-    Hit& hit = *found;
+    std::optional<SurfaceCrossing> crossing = shape_->cross(local, tMax - shift);
+    // In float, as the record's t is (record() adds the same shift to it).
+    if (crossing) crossing->t = static_cast<float>(crossing->t) + shift;
+    return crossing;
+}
+
+Hit Instance::record(const Ray& ray, const SurfaceCrossing& crossing) const {
+    float shift;
+    const Ray local = toObject(ray, shift);
+    Hit hit = shape_->record(local, crossing);
 
     hit.t += shift;
     Vec3 pError;
@@ -65,7 +72,7 @@ std::optional<Hit> Instance::intersect(const Ray& ray, float tMax) const {
     hit.dpdv = objectToWorld_.applyVector(hit.dpdv);
     if (material()) hit.material = material();
     hit.shape = this;
-    return found;
+    return hit;
 }
 
 float Instance::areaStretch(const Vec3& n) const {

@@ -15,7 +15,8 @@ public:
     Instance(std::shared_ptr<const Shape> shape, const Transform& objectToWorld,
              const Material* materialOverride = nullptr);
 
-    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
+    std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
+    Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     bool occluded(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override;
     bool isBounded() const override { return shape_->isBounded(); }

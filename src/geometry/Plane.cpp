@@ -31,13 +31,18 @@ Bounds3 Plane::bounds() const {
     return {Vec3(-kInfinity), Vec3(kInfinity)};
 }
 
-std::optional<Hit> Plane::intersect(const Ray& ray, float tMax) const {
-    const Vec3d p0(point_);
+std::optional<SurfaceCrossing> Plane::cross(const Ray& ray, float tMax) const {
     const std::optional<PlaneCrossing> crossing =
-        PlaneCrossing::find(ray, p0, Vec3d(normal_), tMax);
+        PlaneCrossing::find(ray, Vec3d(point_), Vec3d(normal_), tMax);
     if (!crossing) return std::nullopt;
-    const double t = crossing->t;
-    const Vec3 p(p0 + crossing->offset);
+    return SurfaceCrossing{crossing->t, crossing->t};
+}
+
+Hit Plane::record(const Ray& ray, const SurfaceCrossing& at) const {
+    const Vec3d p0(point_);
+    const PlaneCrossing crossing = PlaneCrossing::at(ray, p0, Vec3d(normal_), at.tShape);
+    const double t = crossing.t;
+    const Vec3 p(p0 + crossing.offset);
 
     Hit hit;
     hit.t = static_cast<float>(t);
@@ -76,7 +81,7 @@ Tessellation Plane::tessellate(const TessellationRequest& request) const {
     for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
         std::array<Vec3, 3> t{Vec3(polygon[0]), Vec3(polygon[i]), Vec3(polygon[i + 1])};
         // The plane's normal is its front.
-        if (dot(cross(t[1] - t[0], t[2] - t[0]), normal_) < 0) std::swap(t[1], t[2]);
+        if (dot(lancer::cross(t[1] - t[0], t[2] - t[0]), normal_) < 0) std::swap(t[1], t[2]);
         tessellation.facets.push_back({t, 0});
     }
     return tessellation;

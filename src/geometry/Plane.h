@@ -17,7 +17,8 @@ public:
     static std::vector<std::string> keys() { return {"point", "normal"}; }
     static std::unique_ptr<Shape> create(const Parameters& parameters, const Material* material);
 
-    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
+    std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
+    Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override;
     bool isBounded() const override { return false; }
     // Infinite: a plane cannot be sampled as a light (only rays that hit it find its light).

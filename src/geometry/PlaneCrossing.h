@@ -23,7 +23,12 @@ struct PlaneCrossing {
         const Vec3d o(ray.origin);
         const double t = dot(n, origin - o) / denominator;
         if (!(t > 0 && t < tMax)) return std::nullopt;
-        Vec3d q = o + t * d - origin;
+        return at(ray, origin, n, t);
+    }
+
+    // The crossing at a t that find() returned.
+    static PlaneCrossing at(const Ray& ray, const Vec3d& origin, const Vec3d& n, double t) {
+        Vec3d q = Vec3d(ray.origin) + t * Vec3d(ray.direction) - origin;
         q -= (dot(n, q) / dot(n, n)) * n;
         return PlaneCrossing{t, q};
     }

@@ -6,7 +6,7 @@ namespace lancer {
 
 Quad::Quad(const Vec3& corner, const Vec3& edge1, const Vec3& edge2, const Material* material)
     : Shape(material), corner_(corner), edge1_(edge1), edge2_(edge2) {
-    const Vec3d n = cross(Vec3d(edge1), Vec3d(edge2));
+    const Vec3d n = lancer::cross(Vec3d(edge1), Vec3d(edge2));
     normal_ = Vec3(normalize(n));
     area_ = static_cast<float>(length(n));
 }
@@ -20,23 +20,28 @@ Bounds3 Quad::bounds() const {
     return {box.min - slack, box.max + slack};
 }
 
-std::optional<Hit> Quad::intersect(const Ray& ray, float tMax) const {
+std::optional<SurfaceCrossing> Quad::cross(const Ray& ray, float tMax) const {
     // In double precision (PlaneCrossing), and so are the edge tests: they must not let rays slip
     // between two quads sharing an edge.
     const Vec3d e1(edge1_), e2(edge2_);
-    const Vec3d n = cross(e1, e2);
-    const Vec3d c(corner_);
-    const std::optional<PlaneCrossing> crossing = PlaneCrossing::find(ray, c, n, tMax);
+    const Vec3d n = lancer::cross(e1, e2);
+    const std::optional<PlaneCrossing> crossing = PlaneCrossing::find(ray, Vec3d(corner_), n, tMax);
     if (!crossing) return std::nullopt;
-    const double t = crossing->t;
     // The point's coordinates along the edges: q = u e1 + v e2 gives q x e2 = u n, e1 x q = v n.
     const Vec3d& q = crossing->offset;
     const double nn = dot(n, n);
-    const double u = dot(cross(q, e2), n) / nn;
-    const double v = dot(cross(e1, q), n) / nn;
+    const double u = dot(lancer::cross(q, e2), n) / nn;
+    const double v = dot(lancer::cross(e1, q), n) / nn;
     if (!(u >= 0 && u <= 1 && v >= 0 && v <= 1)) return std::nullopt;
+    return SurfaceCrossing{crossing->t, crossing->t, 0, static_cast<float>(u),
+                           static_cast<float>(v)};
+}
 
-    const Vec3 p(c + q);
+Hit Quad::record(const Ray& ray, const SurfaceCrossing& crossing) const {
+    const Vec3d c(corner_);
+    const double t = crossing.tShape;
+    const Vec3 p(c +
+                 PlaneCrossing::at(ray, c, lancer::cross(Vec3d(edge1_), Vec3d(edge2_)), t).offset);
     Hit hit;
     hit.t = static_cast<float>(t);
     hit.p = p;
@@ -45,7 +50,7 @@ std::optional<Hit> Quad::intersect(const Ray& ray, float tMax) const {
     hit.ns = normal_;
     hit.dpdu = edge1_;
     hit.dpdv = edge2_;
-    hit.uv = {static_cast<float>(u), static_cast<float>(v)};
+    hit.uv = {crossing.b0, crossing.b1};
     hit.shape = this;
     hit.primitive = 0;
     hit.material = material();

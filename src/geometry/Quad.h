@@ -12,7 +12,8 @@ class Quad final : public Shape {
 public:
     Quad(const Vec3& corner, const Vec3& edge1, const Vec3& edge2, const Material* material);
 
-    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
+    std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
+    Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override;
     bool emitsOnBothSides() const override { return false; }
     float area(std::uint32_t) const override { return area_; }

@@ -5,6 +5,7 @@
 
 #include "geometry/Hit.h"
 #include "geometry/ShapeSample.h"
+#include "geometry/SurfaceCrossing.h"
 #include "geometry/Tessellation.h"
 #include "math/Bounds3.h"
 #include "math/Ray.h"
@@ -26,16 +27,23 @@ public:
     Shape(const Shape&) = delete;
     Shape& operator=(const Shape&) = delete;
 
-    // The nearest intersection with 0 < t < tMax: a record with every field set (t, p, pError,
-    // ng, ns, dpdu, dpdv, uv, shape, primitive, material; the uv footprint is the caller's), or
-    // nothing.
-    virtual std::optional<Hit> intersect(const Ray& ray, float tMax) const = 0;
+    // The nearest intersection with 0 < t < tMax: a fresh record with every field set (t, p,
+    // pError, ng, ns, dpdu, dpdv, uv, shape, primitive, material; the uv footprint is the
+    // caller's), or nothing.
+    std::optional<Hit> intersect(const Ray& ray, float tMax) const {
+        const std::optional<SurfaceCrossing> crossing = cross(ray, tMax);
+        if (!crossing) return std::nullopt;
+        return record(ray, *crossing);
+    }
+    // The same in two phases (pbrt-v4's basic intersection, then the interaction), for a caller
+    // that tries many shapes and wants the record of the nearest only: the nearest crossing with
+    // 0 < t < tMax, then the record of a crossing that cross(ray, ·) found.
+    virtual std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const = 0;
+    virtual Hit record(const Ray& ray, const SurfaceCrossing& crossing) const = 0;
 
     // Whether anything is hit with 0 < t < tMax: shadow rays, which need no hit record and can
     // stop at the first hit found.
-    virtual bool occluded(const Ray& ray, float tMax) const {
-        return intersect(ray, tMax).has_value();
-    }
+    virtual bool occluded(const Ray& ray, float tMax) const { return cross(ray, tMax).has_value(); }
 
     // The box the shape fits in. Only meaningful when isBounded().
     virtual Bounds3 bounds() const = 0;

@@ -18,7 +18,7 @@ Bounds3 Sphere::bounds() const {
     return {center_ - Vec3(radius_), center_ + Vec3(radius_)};
 }
 
-std::optional<double> Sphere::nearestT(const Ray& ray, float tMax) const {
+std::optional<SurfaceCrossing> Sphere::cross(const Ray& ray, float tMax) const {
     // Solved in double precision: the roots, and so the side of the surface a spawned ray starts
     // on, are then exact to far below the float error bound used to offset spawned rays.
     const Vec3d o = Vec3d(ray.origin) - Vec3d(center_);
@@ -40,17 +40,11 @@ std::optional<double> Sphere::nearestT(const Ray& ray, float tMax) const {
     if (t0 >= tMax || t1 <= 0) return std::nullopt;
     const double t = t0 > 0 ? t0 : t1;
     if (t >= tMax) return std::nullopt;
-    return t;
+    return SurfaceCrossing{t, t};
 }
 
-bool Sphere::occluded(const Ray& ray, float tMax) const {
-    return nearestT(ray, tMax).has_value();
-}
-
-std::optional<Hit> Sphere::intersect(const Ray& ray, float tMax) const {
-    const std::optional<double> found = nearestT(ray, tMax);
-    if (!found) return std::nullopt;
-    const double t = *found;
+Hit Sphere::record(const Ray& ray, const SurfaceCrossing& crossing) const {
+    const double t = crossing.tShape;
     const double r = radius_;
     // Project the point back onto the surface; what remains is the rounding to float.
     Vec3d local = Vec3d(ray.origin) - Vec3d(center_) + t * Vec3d(ray.direction);

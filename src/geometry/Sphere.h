@@ -19,8 +19,8 @@ public:
     static std::vector<std::string> keys() { return {"center", "radius"}; }
     static std::unique_ptr<Shape> create(const Parameters& parameters, const Material* material);
 
-    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
-    bool occluded(const Ray& ray, float tMax) const override;
+    std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
+    Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override;
 
     float area(std::uint32_t primitive) const override;
@@ -36,8 +36,6 @@ public:
     float radius() const { return radius_; }
 
 private:
-    // The nearest root t of the ray with 0 < t < tMax.
-    std::optional<double> nearestT(const Ray& ray, float tMax) const;
     // Whether p is inside the sphere or within rounding error of its surface (hit points on the
     // sphere itself, from inside or out): from there the whole sphere is seen, which area
     // sampling covers, while the cone would shrink to the point itself.

@@ -30,7 +30,7 @@ Triangle::Triangle(const std::array<Vec3, 3>& vertices, const Material* material
     : Triangle(makeSingleTriangleMesh(vertices, normals, uvs), 0, material) {}
 
 float Triangle::areaOf(const std::array<Vec3, 3>& p) {
-    return 0.5f * length(cross(p[1] - p[0], p[2] - p[0]));
+    return 0.5f * length(lancer::cross(p[1] - p[0], p[2] - p[0]));
 }
 
 float Triangle::area(std::uint32_t) const {
@@ -41,7 +41,7 @@ ShapeSample Triangle::sampleUniformly(const std::array<Vec3, 3>& p, const Vec2& 
     const float su0 = std::sqrt(u.x);
     const float b0 = 1 - su0, b1 = u.y * su0;
     return {b0 * p[0] + b1 * p[1] + (1 - b0 - b1) * p[2],
-            normalize(cross(p[1] - p[0], p[2] - p[0])), 1 / areaOf(p)};
+            normalize(lancer::cross(p[1] - p[0], p[2] - p[0])), 1 / areaOf(p)};
 }
 
 std::optional<ShapeSample> Triangle::sample(std::uint32_t, const Vec2& u) const {
@@ -66,12 +66,17 @@ Bounds3 Triangle::bounds() const {
     return merge(Bounds3(p[v[0]], p[v[1]]), p[v[2]]);
 }
 
-std::optional<Hit> Triangle::intersect(const Ray& ray, float tMax) const {
+std::optional<SurfaceCrossing> Triangle::cross(const Ray& ray, float tMax) const {
     const std::uint32_t* v = &mesh_->indices[3 * std::size_t{index_}];
     const std::vector<Vec3>& p = mesh_->positions;
     const auto at = intersect(p[v[0]], p[v[1]], p[v[2]], ray, tMax);
     if (!at) return std::nullopt;
-    Hit hit = makeHit(*mesh_, index_, *at);
+    return SurfaceCrossing{at->t, at->t, 0, at->b0, at->b1, at->b2};
+}
+
+Hit Triangle::record(const Ray&, const SurfaceCrossing& crossing) const {
+    Hit hit = makeHit(*mesh_, index_,
+                      {crossing.b0, crossing.b1, crossing.b2, static_cast<float>(crossing.tShape)});
     hit.shape = this;
     hit.primitive = 0;  // the triangle is this shape's one primitive
     if (material()) hit.material = material();
@@ -99,7 +104,7 @@ Hit Triangle::makeHit(const TriangleMesh& mesh, std::uint32_t index,
     hit.primitive = index;
     hit.p = b0 * p0 + b1 * p1 + b2 * p2;
     hit.pError = gamma(7) * (abs(b0 * p0) + abs(b1 * p1) + abs(b2 * p2));
-    hit.ng = normalize(cross(p1 - p0, p2 - p0));
+    hit.ng = normalize(lancer::cross(p1 - p0, p2 - p0));
     hit.ns = hit.ng;
     if (!mesh.normals.empty()) {
         const Vec3 ns = b0 * mesh.normals[v[0]] + b1 * mesh.normals[v[1]] + b2 * mesh.normals[v[2]];

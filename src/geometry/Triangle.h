@@ -23,7 +23,9 @@ public:
              const std::optional<std::array<Vec3, 3>>& normals = std::nullopt,
              const std::optional<std::array<Vec2, 3>>& uvs = std::nullopt);
 
-    std::optional<Hit> intersect(const Ray& ray, float tMax) const override;
+    using Shape::intersect;  // beside the static test of a triangle's vertices below
+    std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
+    Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override;
     bool emitsOnBothSides() const override { return false; }
     float area(std::uint32_t primitive) const override;

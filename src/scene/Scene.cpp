@@ -51,21 +51,26 @@ void Scene::addLight(std::unique_ptr<Light> light) {
 }
 
 std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {
-    std::optional<Hit> nearest;
+    // The candidates only cross; the record is made once, for the nearest.
+    const Shape* nearestShape = nullptr;
+    SurfaceCrossing nearest{};
     bvh_->intersect(ray, tMax, [&](std::uint32_t k, const Ray& r, float& tFar) {
-        std::optional<Hit> hit = boundedShapes_[k]->intersect(r, tFar);
-        if (!hit) return false;
-        tFar = hit->t;
-        nearest = std::move(hit);
+        const std::optional<SurfaceCrossing> crossing = boundedShapes_[k]->cross(r, tFar);
+        if (!crossing) return false;
+        nearestShape = boundedShapes_[k].get();
+        nearest = *crossing;
+        tFar = static_cast<float>(crossing->t);
         return true;
     });
     for (const auto& shape : unboundedShapes_) {
-        if (std::optional<Hit> hit = shape->intersect(ray, tMax)) {
-            tMax = hit->t;
-            nearest = std::move(hit);
+        if (const std::optional<SurfaceCrossing> crossing = shape->cross(ray, tMax)) {
+            nearestShape = shape.get();
+            nearest = *crossing;
+            tMax = static_cast<float>(crossing->t);
         }
     }
-    return nearest;
+    if (!nearestShape) return std::nullopt;
+    return nearestShape->record(ray, nearest);
 }
 
 bool Scene::occluded(const Ray& ray, float tMax) const {

@@ -66,7 +66,7 @@ public:
     const std::vector<std::unique_ptr<Shape>>& boundedShapes() const { return boundedShapes_; }
     Bounds3 bounds() const;
 
-    // The nearest hit with 0 < t < tMax, if any.
+    // The nearest hit with 0 < t < tMax, if any: every candidate crosses, the nearest is recorded.
     std::optional<Hit> intersect(const Ray& ray, float tMax) const;
     // Whether anything is hit with 0 < t < tMax.
     bool occluded(const Ray& ray, float tMax) const;

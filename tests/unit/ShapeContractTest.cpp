@@ -145,6 +145,13 @@ TEST_P(ShapeContract, EveryFieldOfTheRecordIsSet) {
         ASSERT_LT(hit->primitive, shape->primitiveCount());
         EXPECT_EQ(hit->material, shape->primitiveMaterial(hit->primitive));
         EXPECT_EQ(hit->dudx, 0);  // the footprint is the integrator's
+        // The first phase alone finds the same crossing.
+        const std::optional<SurfaceCrossing> crossing = shape->cross(ray, kInfinity);
+        ASSERT_TRUE(crossing);
+        EXPECT_EQ(static_cast<float>(crossing->t), hit->t);
+        EXPECT_EQ(crossing->primitive, hit->primitive);
+        EXPECT_TRUE(shape->occluded(ray, kInfinity));
+        EXPECT_FALSE(shape->occluded(ray, 0.999f * hit->t)) << "nothing nearer";
     }
 }
 
