@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "materials/Bsdf.h"
 #include "geometry/Shape.h"
+#include "materials/Bsdf.h"
 #include "materials/Material.h"
 #include "sampling/Sampler.h"
 #include "scene/Scene.h"

@@ -3,10 +3,10 @@
 // emitter over a Lambertian floor it gives the closed-form irradiance of a disk in `path` (light
 // sampling by area, weighted against BSDF rays) and in `radiosity` (its patches shoot).
 //
-// The floor, a disk of radius 1 on y = 0, has kd = 0.5 and the lamp, of radius R = 0.5 at height h = 1, faces down (it
-// emits on both sides, like a plane). A floor point at distance rho from the axis receives
-// E = pi L / 2 (1 - (h^2 + rho^2 - R^2) / sqrt((h^2 + rho^2 + R^2)^2 - 4 R^2 rho^2)), and shows
-// kd E / pi in `path` and `radiosity`.
+// The floor, a disk of radius 1 on y = 0, has kd = 0.5 and the lamp, of radius R = 0.5 at height h
+// = 1, faces down (it emits on both sides, like a plane). A floor point at distance rho from the
+// axis receives E = pi L / 2 (1 - (h^2 + rho^2 - R^2) / sqrt((h^2 + rho^2 + R^2)^2 - 4 R^2 rho^2)),
+// and shows kd E / pi in `path` and `radiosity`.
 
 #include <gtest/gtest.h>
 
@@ -32,13 +32,13 @@ double diskIrradiance(double rho) {
 
 // Looking straight down at the floor from just under the disk: 9 x 9 pixels over a square of
 // about 0.3 on a side.
-const CameraModel kFloorCamera{.position = {0, 0.95, 0},
-                               .lookAt = {0, 0, 0},
-                               .up = {0, 0, -1},
-                               .vfovDegrees = 2 * std::atan(0.15 / 0.95) * 180 /
-                                              3.14159265358979323846,
-                               .width = 9,
-                               .height = 9};
+const CameraModel kFloorCamera{
+    .position = {0, 0.95, 0},
+    .lookAt = {0, 0, 0},
+    .up = {0, 0, -1},
+    .vfovDegrees = 2 * std::atan(0.15 / 0.95) * 180 / 3.14159265358979323846,
+    .width = 9,
+    .height = 9};
 
 json diskOverFloor(const std::string& integrator, int spp) {
     json scene = json::parse(R"({

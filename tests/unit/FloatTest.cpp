@@ -25,9 +25,9 @@ void expectSameAsNextafter(float v) {
 
 TEST(NextFloat, MatchesNextafterOnTheSpecialValues) {
     using limits = std::numeric_limits<float>;
-    for (const float v : {0.0f, -0.0f, limits::denorm_min(), -limits::denorm_min(), limits::min(),
-                          -limits::min(), 1.0f, -1.0f, limits::max(), -limits::max(), kInfinity,
-                          -kInfinity})
+    for (const float v :
+         {0.0f, -0.0f, limits::denorm_min(), -limits::denorm_min(), limits::min(), -limits::min(),
+          1.0f, -1.0f, limits::max(), -limits::max(), kInfinity, -kInfinity})
         expectSameAsNextafter(v);
 }
 

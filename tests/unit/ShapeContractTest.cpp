@@ -77,9 +77,7 @@ std::vector<ShapeCase> shapeCases() {
          },
          true},
         {"Annulus",
-         [] {
-             return std::make_unique<Disk>(Vec3(0), Vec3(-0.5f, 0.2f, 1), 1, 0.4f, &kMaterial);
-         },
+         [] { return std::make_unique<Disk>(Vec3(0), Vec3(-0.5f, 0.2f, 1), 1, 0.4f, &kMaterial); },
          true},
         {"InstancedSphere",
          [=] {
