@@ -86,7 +86,8 @@ Color Bsdf::localResponse(const Vec3& wo, const Vec3& wi, bool front) const {
     const Vec3 n = shadingNormal(front);
     const float cosThetaL = dot(n, wi);
     if (cosThetaL <= 0) return Color(0);
-    const float cosThetaH = dot(n, normalize(wi + wo));
+    // The half vector only for lobes that look at it (Lambertian ones do not).
+    const float cosThetaH = hasGlossyLobe_ ? dot(n, normalize(wi + wo)) : 0;
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
         if (!lobes_[i]->isDelta()) sum += lobes_[i]->localResponse(cosThetaL, cosThetaH);
@@ -122,12 +123,6 @@ Color Bsdf::diffuseReflectance() const {
     for (std::size_t i = 0; i < lobeCount_; ++i)
         if (lobes_[i]->isDiffuse()) sum += lobes_[i]->weight();
     return sum;
-}
-
-bool Bsdf::hasGlossyLobe() const {
-    for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!lobes_[i]->isDelta() && !lobes_[i]->isDiffuse()) return true;
-    return false;
 }
 
 Color Bsdf::glossyF(const Vec3& wo, const Vec3& wi) const {

@@ -81,7 +81,7 @@ public:
     // The albedo of the ideal diffuse lobes (f = albedo / pi), which radiosity handles.
     Color diffuseReflectance() const;
     // Whether some lobe is neither diffuse nor delta (highlights).
-    bool hasGlossyLobe() const;
+    bool hasGlossyLobe() const { return hasGlossyLobe_; }
     // The sum of f over the lobes neither diffuse nor delta, without the geometric cut: the
     // highlights that radiosity adds for the lights, judged by the shading normal alone.
     Color glossyF(const Vec3& wo, const Vec3& wi) const;
@@ -108,6 +108,7 @@ private:
     std::array<LobeStorage, kMaxLobes> storage_;
     std::array<BsdfLobe*, kMaxLobes> lobes_{};
     bool hasDeltaLobe_ = false;
+    bool hasGlossyLobe_ = false;  // whose local response needs the half vector
     // Of choosing each lobe, for sample() and pdf(): set for EnergyConserving weights only.
     std::array<float, kMaxLobes> probabilities_{};
 };
@@ -122,6 +123,7 @@ void Bsdf::add(Args&&... args) {
     Lobe* lobe = ::new (storage_[lobeCount_].bytes) Lobe(std::forward<Args>(args)...);
     if (lobe->weight().isBlack()) return;
     hasDeltaLobe_ |= lobe->isDelta();
+    hasGlossyLobe_ |= !lobe->isDelta() && !lobe->isDiffuse();
     lobes_[lobeCount_++] = lobe;
 }
 

@@ -51,26 +51,32 @@ void Scene::addLight(std::unique_ptr<Light> light) {
 }
 
 std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {
-    // The candidates only cross; the record is made once, for the nearest.
-    const Shape* nearestShape = nullptr;
-    SurfaceCrossing nearest{};
+    const std::optional<SceneCrossing> crossing = cross(ray, tMax);
+    if (!crossing) return std::nullopt;
+    return record(ray, *crossing);
+}
+
+std::optional<SceneCrossing> Scene::cross(const Ray& ray, float tMax) const {
+    // The candidates only cross; the caller records the nearest.
+    std::optional<SceneCrossing> nearest;
     bvh_->intersect(ray, tMax, [&](std::uint32_t k, const Ray& r, float& tFar) {
         const std::optional<SurfaceCrossing> crossing = boundedShapes_[k]->cross(r, tFar);
         if (!crossing) return false;
-        nearestShape = boundedShapes_[k].get();
-        nearest = *crossing;
+        nearest = SceneCrossing{boundedShapes_[k].get(), *crossing};
         tFar = static_cast<float>(crossing->t);
         return true;
     });
     for (const auto& shape : unboundedShapes_) {
         if (const std::optional<SurfaceCrossing> crossing = shape->cross(ray, tMax)) {
-            nearestShape = shape.get();
-            nearest = *crossing;
+            nearest = SceneCrossing{shape.get(), *crossing};
             tMax = static_cast<float>(crossing->t);
         }
     }
-    if (!nearestShape) return std::nullopt;
-    return nearestShape->record(ray, nearest);
+    return nearest;
+}
+
+Hit Scene::record(const Ray& ray, const SceneCrossing& crossing) const {
+    return crossing.shape->record(ray, crossing.crossing);
 }
 
 bool Scene::occluded(const Ray& ray, float tMax) const {

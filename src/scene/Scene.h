@@ -11,6 +11,7 @@
 #include "math/Ray.h"
 #include "scene/Camera.h"
 #include "scene/RenderSettings.h"
+#include "scene/SceneCrossing.h"
 
 namespace lancer {
 
@@ -68,6 +69,10 @@ public:
 
     // The nearest hit with 0 < t < tMax, if any: every candidate crosses, the nearest is recorded.
     std::optional<Hit> intersect(const Ray& ray, float tMax) const;
+    // The same in two phases: the nearest crossing, then its record (for callers that may need
+    // no record, such as shadow rays stopped by an opaque surface).
+    std::optional<SceneCrossing> cross(const Ray& ray, float tMax) const;
+    Hit record(const Ray& ray, const SceneCrossing& crossing) const;
     // Whether anything is hit with 0 < t < tMax.
     bool occluded(const Ray& ray, float tMax) const;
 

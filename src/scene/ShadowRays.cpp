@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "geometry/Shape.h"
 #include "materials/Material.h"
 #include "scene/Scene.h"
 
@@ -24,11 +25,16 @@ Color ShadowRays::transmittance(const Scene& scene, const Hit& from, const Light
     // the light and ends.
     for (;;) {
         ++rayCount;
-        const std::optional<Hit> blocker = scene.intersect(towards(surface, light), reach(light));
-        if (!blocker) return visibility;
-        visibility *= blocker->material->transmission();
+        const Ray ray = towards(surface, light);
+        const std::optional<SceneCrossing> crossing = scene.cross(ray, reach(light));
+        if (!crossing) return visibility;
+        // An opaque surface stops the light: no record needed to know it.
+        const Material* material = crossing->shape->primitiveMaterial(crossing->crossing.primitive);
+        if (material && !material->isTransmissive()) return Color(0);
+        const Hit blocker = scene.record(ray, *crossing);
+        visibility *= blocker.material->transmission();
         if (visibility.isBlack()) return visibility;
-        surface = *blocker;
+        surface = blocker;
     }
 }
 
