@@ -63,12 +63,7 @@ Hit Disk::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     double phi = std::atan2(y, x);
     if (phi < 0) phi += 2 * kPi;
     const Vec3 p(c + q);
-    Hit hit;
-    hit.t = static_cast<float>(t);
-    hit.p = p;
-    hit.pError = gamma(2) * abs(p);
-    hit.ng = normal_;
-    hit.ns = normal_;
+    Hit hit = Hit::atRoundedPoint(t, p, normal_);
     hit.uv = {static_cast<float>(phi / (2 * kPi)), static_cast<float>((R - r) / (R - Ri))};
     // p = c + r (cos phi t + sin phi b), phi = 2 pi u, r = R - (R - Ri) v.
     const auto cosPhi = static_cast<float>(std::cos(phi)),

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "math/Float.h"
 #include "math/Ray.h"
 #include "math/Vec2.h"
 #include "math/Vec3.h"
@@ -31,6 +32,19 @@ struct Hit {
     // names an emissive face's light.
     std::uint32_t primitive = 0;
     const Material* material = nullptr;
+
+    // The record of a point found in double precision and rounded to float, p (whose error is
+    // then within gamma(2) |p|), with the same geometric and shading normal n: the analytic
+    // shapes' start. The rest of the record is theirs to set.
+    static Hit atRoundedPoint(double t, const Vec3& p, const Vec3& n) {
+        Hit hit;
+        hit.t = static_cast<float>(t);
+        hit.p = p;
+        hit.pError = gamma(2) * abs(p);
+        hit.ng = n;
+        hit.ns = n;
+        return hit;
+    }
 
     // Sets the uv footprint from the footprint of a pixel on the surface, dpdx and dpdy (how p
     // moves from pixel to pixel), by solving dpdx = dudx dpdu + dvdx dpdv in the least-squares

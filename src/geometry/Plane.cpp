@@ -44,12 +44,7 @@ Hit Plane::record(const Ray& ray, const SurfaceCrossing& at) const {
     const double t = crossing.t;
     const Vec3 p(p0 + crossing.offset);
 
-    Hit hit;
-    hit.t = static_cast<float>(t);
-    hit.p = p;
-    hit.pError = gamma(2) * abs(p);
-    hit.ng = normal_;
-    hit.ns = normal_;
+    Hit hit = Hit::atRoundedPoint(t, p, normal_);
     hit.dpdu = dpdu_;
     hit.dpdv = dpdv_;
     hit.uv = {p[uAxis_], p[vAxis_]};

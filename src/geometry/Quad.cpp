@@ -42,12 +42,7 @@ Hit Quad::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     const double t = crossing.tShape;
     const Vec3 p(c +
                  PlaneCrossing::at(ray, c, lancer::cross(Vec3d(edge1_), Vec3d(edge2_)), t).offset);
-    Hit hit;
-    hit.t = static_cast<float>(t);
-    hit.p = p;
-    hit.pError = gamma(2) * abs(p);
-    hit.ng = normal_;
-    hit.ns = normal_;
+    Hit hit = Hit::atRoundedPoint(t, p, normal_);
     hit.dpdu = edge1_;
     hit.dpdv = edge2_;
     hit.uv = {crossing.b0, crossing.b1};

@@ -52,12 +52,7 @@ Hit Sphere::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     const Vec3 p = Vec3(Vec3d(center_) + local);
     const Vec3 n = Vec3(local / r);
 
-    Hit hit;
-    hit.t = static_cast<float>(t);
-    hit.p = p;
-    hit.pError = gamma(2) * abs(p);
-    hit.ng = n;
-    hit.ns = n;
+    Hit hit = Hit::atRoundedPoint(t, p, n);
     // u = phi / 2 pi and v = 1/2 + lambda / pi for the longitude phi and latitude lambda of
     // n = (cos lambda cos phi, sin lambda, -cos lambda sin phi).
     float phi = std::atan2(-n.z, n.x);
