@@ -33,9 +33,6 @@ public:
     // The shape's facets in the world, asked as fine as the world-space size needs.
     Tessellation tessellate(const TessellationRequest& request) const override;
 
-    const Shape& placedShape() const { return *shape_; }
-    const Transform& objectToWorld() const { return objectToWorld_; }
-
 private:
     // The ray in the shape's space, and the shift of its parameter t (see intersect).
     Ray toObject(const Ray& ray, float& shift) const;

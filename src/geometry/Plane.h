@@ -29,7 +29,6 @@ public:
     // The part inside the request's box, as a fan of facets.
     Tessellation tessellate(const TessellationRequest& request) const override;
 
-    const Vec3& point() const { return point_; }
     const Vec3& normal() const { return normal_; }
 
 private:

@@ -21,9 +21,6 @@ public:
     // Two facets, split along the diagonal from the corner.
     Tessellation tessellate(const TessellationRequest& request) const override;
 
-    const Vec3& corner() const { return corner_; }
-    const Vec3& edge1() const { return edge1_; }
-    const Vec3& edge2() const { return edge2_; }
     // The unit normal on the front side.
     const Vec3& normal() const { return normal_; }
     // The point at surface coordinates uv.

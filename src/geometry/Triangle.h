@@ -33,7 +33,6 @@ public:
     Tessellation tessellate(const TessellationRequest& request) const override;
 
     std::array<Vec3, 3> vertices() const;
-    std::uint32_t index() const { return index_; }
 
     // Watertight ray/triangle intersection with 0 < t < tMax (see TriangleIntersector).
     static std::optional<TriangleIntersection> intersect(const Vec3& p0, const Vec3& p1,
