@@ -21,9 +21,11 @@ void Bsdf::weighLobes(Weights weights) {
     for (std::size_t i = 0; i < lobeCount_; ++i)
         sum += lobes_[i]->weight();
     const float largest = sum.maxComponent();
-    if (largest > 1)
+    if (largest > 1) {
         for (std::size_t i = 0; i < lobeCount_; ++i)
             lobes_[i]->scaleWeight(1 / largest);
+        diffuseWeight_ *= 1 / largest;
+    }
     float total = 0;
     for (std::size_t i = 0; i < lobeCount_; ++i) {
         probabilities_[i] = std::max(0.0f, lobes_[i]->weight().average());
@@ -34,9 +36,7 @@ void Bsdf::weighLobes(Weights weights) {
 }
 
 bool Bsdf::hasNonDeltaLobe() const {
-    for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!lobes_[i]->isDelta()) return true;
-    return false;
+    return lobeCount_ > deltaCount_;
 }
 
 Color Bsdf::f(const Vec3& wo, const Vec3& wi) const {
@@ -86,25 +86,25 @@ Color Bsdf::localResponse(const Vec3& wo, const Vec3& wi, bool front) const {
     const Vec3 n = shadingNormal(front);
     const float cosThetaL = dot(n, wi);
     if (cosThetaL <= 0) return Color(0);
-    // The half vector only for lobes that look at it (Lambertian ones do not).
-    const float cosThetaH = hasGlossyLobe_ ? dot(n, normalize(wi + wo)) : 0;
-    Color sum;
-    for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!lobes_[i]->isDelta()) sum += lobes_[i]->localResponse(cosThetaL, cosThetaH);
+    // kd cos(theta_L) for the diffuse lobes, then the glossy ones, which need the half vector.
+    Color sum = diffuseWeight_ * cosThetaL;
+    if (glossyCount_ == 0) return sum;
+    const float cosThetaH = dot(n, normalize(wi + wo));
+    for (std::size_t i = 0; i < glossyCount_; ++i)
+        sum += glossyLobes_[i]->localResponse(cosThetaL, cosThetaH);
     return sum;
 }
 
 std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
                                std::array<SpecularRay, kMaxSpecularRays>& rays) const {
-    if (!hasDeltaLobe_) return 0;
+    if (deltaCount_ == 0) return 0;
     const Vec3 n = shadingNormal(front);
     const float cosThetaO = std::min(1.0f, std::abs(dot(wo, n)));
     // Refractions from rays[1] on, behind the reflection's place.
     Color reflected;
     std::size_t count = 1;
-    for (std::size_t i = 0; i < lobeCount_; ++i) {
-        if (!lobes_[i]->isDelta()) continue;
-        const SpecularSplit split = lobes_[i]->specularSplit(cosThetaO, front);
+    for (std::size_t i = 0; i < deltaCount_; ++i) {
+        const SpecularSplit split = deltaLobes_[i]->specularSplit(cosThetaO, front);
         reflected += split.reflected;
         if (split.refracted.isBlack()) continue;
         if (const std::optional<Vec3> refracted = refract(wo, n, split.eta))
@@ -118,18 +118,11 @@ std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
     return count - 1;
 }
 
-Color Bsdf::diffuseReflectance() const {
-    Color sum;
-    for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (lobes_[i]->isDiffuse()) sum += lobes_[i]->weight();
-    return sum;
-}
-
 Color Bsdf::glossyF(const Vec3& wo, const Vec3& wi) const {
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     Color sum;
-    for (std::size_t i = 0; i < lobeCount_; ++i)
-        if (!lobes_[i]->isDelta() && !lobes_[i]->isDiffuse()) sum += lobes_[i]->f(woLocal, wiLocal);
+    for (std::size_t i = 0; i < glossyCount_; ++i)
+        sum += glossyLobes_[i]->f(woLocal, wiLocal);
     return sum;
 }
 

@@ -48,10 +48,10 @@ public:
     Bsdf(const Bsdf&) = delete;
     Bsdf& operator=(const Bsdf&) = delete;
 
-    // Adds a lobe made from args (Material::addLobes does, while the Bsdf is built); one of
-    // black weight adds nothing.
+    // Adds the lobe Lobe(weight, args...) (Material::addLobes does, while the Bsdf is built);
+    // one of black weight adds nothing and is not even made.
     template <class Lobe, class... Args>
-    void add(Args&&... args);
+    void add(const Color& weight, Args&&... args);
 
     // The sum of the non-delta lobes (delta lobes give 0).
     Color f(const Vec3& wo, const Vec3& wi) const;
@@ -79,9 +79,9 @@ public:
     std::size_t specularRays(const Vec3& wo, bool front,
                              std::array<SpecularRay, kMaxSpecularRays>& rays) const;
     // The albedo of the ideal diffuse lobes (f = albedo / pi), which radiosity handles.
-    Color diffuseReflectance() const;
+    const Color& diffuseReflectance() const { return diffuseWeight_; }
     // Whether some lobe is neither diffuse nor delta (highlights).
-    bool hasGlossyLobe() const { return hasGlossyLobe_; }
+    bool hasGlossyLobe() const { return glossyCount_ > 0; }
     // The sum of f over the lobes neither diffuse nor delta, without the geometric cut: the
     // highlights that radiosity adds for the lights, judged by the shading normal alone.
     Color glossyF(const Vec3& wo, const Vec3& wi) const;
@@ -107,23 +107,31 @@ private:
     std::size_t lobeCount_ = 0;
     std::array<LobeStorage, kMaxLobes> storage_;
     std::array<BsdfLobe*, kMaxLobes> lobes_{};
-    bool hasDeltaLobe_ = false;
-    bool hasGlossyLobe_ = false;  // whose local response needs the half vector
+    // The same lobes by kind, for Whitted's and radiosity's sums, which treat each kind its own
+    // way: the diffuse lobes' summed weight (their f and local response follow from it), and
+    // the glossy and delta lobes in the order added.
+    Color diffuseWeight_;
+    std::size_t glossyCount_ = 0, deltaCount_ = 0;
+    std::array<const BsdfLobe*, kMaxLobes> glossyLobes_, deltaLobes_;
     // Of choosing each lobe, for sample() and pdf(): set for EnergyConserving weights only.
     std::array<float, kMaxLobes> probabilities_{};
 };
 
 template <class Lobe, class... Args>
-void Bsdf::add(Args&&... args) {
+void Bsdf::add(const Color& weight, Args&&... args) {
     static_assert(std::is_base_of_v<BsdfLobe, Lobe>);
     static_assert(sizeof(Lobe) <= kLobeSize && alignof(Lobe) <= alignof(LobeStorage),
                   "the lobe does not fit the Bsdf's storage: raise kLobeSize");
     static_assert(std::is_trivially_destructible_v<Lobe>, "the Bsdf never destroys its lobes");
+    if (weight.isBlack()) return;
     if (lobeCount_ == kMaxLobes) throw std::length_error("more lobes than Bsdf::kMaxLobes");
-    Lobe* lobe = ::new (storage_[lobeCount_].bytes) Lobe(std::forward<Args>(args)...);
-    if (lobe->weight().isBlack()) return;
-    hasDeltaLobe_ |= lobe->isDelta();
-    hasGlossyLobe_ |= !lobe->isDelta() && !lobe->isDiffuse();
+    Lobe* lobe = ::new (storage_[lobeCount_].bytes) Lobe(weight, std::forward<Args>(args)...);
+    if (lobe->isDiffuse())
+        diffuseWeight_ += lobe->weight();
+    else if (lobe->isDelta())
+        deltaLobes_[deltaCount_++] = lobe;
+    else
+        glossyLobes_[glossyCount_++] = lobe;
     lobes_[lobeCount_++] = lobe;
 }
 

@@ -18,7 +18,8 @@ class BsdfLobe {
 public:
     // What a lobe is, fixed by its class: asked at every hit, so kept as data, not virtual.
     enum class Kind {
-        Diffuse,  // ideal diffuse, f = weight / pi: the light radiosity computes
+        Diffuse,  // ideal diffuse, f = weight / pi (local response weight cos theta_L): the
+                  // light radiosity computes
         Glossy,   // any other lobe with a density: highlights
         Delta,    // scatters into single directions (mirror, smooth glass): f() and pdf() are 0
                   // and only sample() finds them
@@ -30,10 +31,11 @@ public:
     // A direction for wo from u in [0,1)^2, or none when the lobe has nothing to give.
     virtual std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const = 0;
 
-    // The classic local model that Whitted shades with, next to the physical f(): the light
-    // reflected towards the viewer per unit of a light's irradiance E_l, for the light at
-    // cosThetaL > 0 from the shading normal on the viewer's side and the half vector of light and
-    // viewer at cosThetaH. Black for delta lobes, whose light Whitted traces instead.
+    // The classic local model that Whitted shades with, next to the physical f(), for a glossy
+    // lobe (the Bsdf gives a diffuse lobe's kd cos(theta_L) itself; Whitted traces a delta
+    // lobe's light instead): the light reflected towards the viewer per unit of a light's
+    // irradiance E_l, for the light at cosThetaL > 0 from the shading normal on the viewer's side
+    // and the half vector of light and viewer at cosThetaH.
     virtual Color localResponse(float /*cosThetaL*/, float /*cosThetaH*/) const { return Color(0); }
     // How a delta lobe splits the light from a viewer at cosThetaO (>= 0) from the shading normal
     // on its side, on the front side or not (outside). Nothing for other lobes.

@@ -13,8 +13,6 @@ public:
     Color f(const Vec3& wo, const Vec3& wi) const override;
     float pdf(const Vec3& wo, const Vec3& wi) const override;
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
-    // kd cos(theta_L).
-    Color localResponse(float cosThetaL, float) const override { return weight() * cosThetaL; }
 };
 
 }  // namespace lancer
