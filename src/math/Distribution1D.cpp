@@ -27,11 +27,28 @@ Distribution1D::Distribution1D(std::vector<float> weights) : weights_(std::move(
         c /= total;
     cdf_[n] = 1;
     integral_ = static_cast<float>(sum / static_cast<double>(n));
+    firstInBucket_.resize(n + 1);
+    std::size_t i = 0;
+    for (std::size_t j = 0; j <= n; ++j) {
+        while (bucket(cdf_[i]) < j)
+            ++i;
+        firstInBucket_[j] = static_cast<std::uint32_t>(i);
+    }
+}
+
+std::size_t Distribution1D::bucket(double x) const {
+    return static_cast<std::size_t>(x * static_cast<double>(weights_.size()));
 }
 
 std::size_t Distribution1D::sampleDiscrete(float u, float* pmfOut, float* uRemapped) const {
-    // The last index i with cdf_[i] <= u; cells of zero weight are never chosen.
-    const auto upper = std::upper_bound(cdf_.begin(), cdf_.end(), static_cast<double>(u));
+    // The last index i with cdf_[i] <= u; cells of zero weight are never chosen. Bounds in
+    // buckets below u's are below u and those in buckets above are above it (bucket() is
+    // monotone), so the search needs only the cells from the last bound before u's bucket to
+    // the first beyond it.
+    const std::size_t j = u > 0 ? std::min(bucket(u), weights_.size() - 1) : 0;
+    const auto first = cdf_.begin() + std::max<std::ptrdiff_t>(firstInBucket_[j], 1) - 1;
+    const auto upper =
+        std::upper_bound(first, cdf_.begin() + firstInBucket_[j + 1], static_cast<double>(u));
     std::size_t i = static_cast<std::size_t>(std::max<std::ptrdiff_t>(upper - cdf_.begin() - 1, 0));
     i = std::min(i, weights_.size() - 1);
     while (cdf_[i + 1] == cdf_[i] && i > 0)

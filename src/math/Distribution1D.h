@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace lancer {
@@ -30,7 +31,13 @@ public:
 
 private:
     std::vector<float> weights_;
+    // Which bucket of [0, 1), cut into size() equal parts, holds x: monotone in x, so that it
+    // narrows the search for u to the cells whose bounds fall in u's bucket.
+    std::size_t bucket(double x) const;
+
     std::vector<double> cdf_;  // cdf_[i]: probability of the cells before i; cdf_.back() = 1
+    // firstInBucket_[j]: the first i with bucket(cdf_[i]) >= j, for j in [0, size()].
+    std::vector<std::uint32_t> firstInBucket_;
     float integral_ = 0;
 };
 

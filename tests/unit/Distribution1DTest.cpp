@@ -2,8 +2,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+#include <random>
 #include <stdexcept>
+#include <vector>
 
 using lancer::Distribution1D;
 
@@ -47,4 +51,48 @@ TEST(Distribution1D, RejectsNegativeOrNonFiniteWeights) {
     EXPECT_THROW(Distribution1D({1, std::numeric_limits<float>::quiet_NaN()}),
                  std::invalid_argument);
     EXPECT_THROW(Distribution1D(std::vector<float>{}), std::invalid_argument);
+}
+
+// sampleDiscrete searches only the cells of u's bucket; it must pick what a search of the whole
+// cumulative table picks, for every u, on the boundaries and beside them, whatever the weights
+// (spikes, long runs of zeros, tiny cells several to a bucket).
+TEST(Distribution1D, TheBucketedSearchAgreesWithASearchOfTheWholeTable) {
+    std::vector<float> weights(997, 0.0f);
+    std::mt19937 random(7);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    for (std::size_t i = 0; i < weights.size(); ++i) {
+        const float r = uniform(random);
+        weights[i] = r < 0.5f ? 0.0f : r < 0.9f ? 1e-6f * r : r < 0.99f ? r : 300 * r;
+    }
+    const Distribution1D d(weights);
+    // The table as the class builds it.
+    std::vector<double> cdf(weights.size() + 1, 0.0);
+    for (std::size_t i = 0; i < weights.size(); ++i)
+        cdf[i + 1] = cdf[i] + weights[i];
+    const double total = cdf.back();
+    for (double& c : cdf)
+        c /= total;
+    cdf.back() = 1;
+    const auto wholeTableSearch = [&](float u) {
+        const auto upper = std::upper_bound(cdf.begin(), cdf.end(), static_cast<double>(u));
+        std::size_t i =
+            static_cast<std::size_t>(std::max<std::ptrdiff_t>(upper - cdf.begin() - 1, 0));
+        i = std::min(i, weights.size() - 1);
+        while (cdf[i + 1] == cdf[i] && i > 0)
+            --i;
+        return i;
+    };
+    std::vector<float> us;
+    for (int k = 0; k < 100000; ++k)
+        us.push_back(static_cast<float>(k) / 100000);
+    for (const double c : cdf) {
+        const float u = static_cast<float>(c);
+        for (float v : {std::nextafter(u, 0.0f), u, std::nextafter(u, 1.0f)})
+            if (v >= 0 && v < 1) us.push_back(v);
+    }
+    us.push_back(0x1.fffffep-1f);
+    for (const float u : us) {
+        ASSERT_EQ(d.sampleDiscrete(u), wholeTableSearch(u)) << "u = " << u;
+        EXPECT_GT(d.pmf(d.sampleDiscrete(u)), 0.0f);
+    }
 }
