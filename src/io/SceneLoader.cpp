@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "accel/Mesh.h"
+#include "geometry/Box.h"
 #include "geometry/Disk.h"
 #include "geometry/Instance.h"
 #include "geometry/Plane.h"
@@ -241,6 +242,7 @@ const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectType
         {"triangle", "a triangle", &Reader::loadTriangle},
         {"mesh", "a mesh", &Reader::loadMeshObject},
         {"disk", "a disk", &Reader::loadShape<Disk>},
+        {"box", "a box", &Reader::loadShape<Box>},
     };
     return types;
 }

@@ -12,6 +12,7 @@
 
 #include "TestSupport.h"
 #include "accel/Mesh.h"
+#include "geometry/Box.h"
 #include "geometry/Disk.h"
 #include "geometry/Instance.h"
 #include "geometry/Plane.h"
@@ -79,6 +80,20 @@ std::vector<ShapeCase> shapeCases() {
         {"Annulus",
          [] { return std::make_unique<Disk>(Vec3(0), Vec3(-0.5f, 0.2f, 1), 1, 0.4f, &kMaterial); },
          true},
+        // Samples on the faces turned away from the reference are hidden by the others.
+        {"Box",
+         [] {
+             return std::make_unique<Box>(Vec3(-0.6f, -0.2f, -0.9f), Vec3(0.7f, 0.5f, 0.4f),
+                                          &kMaterial);
+         },
+         false},
+        {"InstancedBox",
+         [=] {
+             return std::make_unique<Instance>(
+                 std::make_shared<Box>(Vec3(-1), Vec3(0.5f, 1, 1), nullptr), stretchAndTurn,
+                 &kMaterial);
+         },
+         false},
         {"InstancedSphere",
          [=] {
              return std::make_unique<Instance>(std::make_shared<Sphere>(Vec3(0), 0.7f, nullptr),
