@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/FlatRings.h"
 #include "geometry/PlaneCrossing.h"
 
 namespace lancer {
@@ -98,24 +99,14 @@ Tessellation Disk::tessellate(const TessellationRequest& request) const {
         return std::clamp(static_cast<int>(std::ceil(length / request.patchSize)), 1, 4096);
     };
     const int segments = std::max(16, piecesFor(2 * kPi * radius_));
-    const int rings = piecesFor(radius_ - innerRadius_);
-    const auto at = [&](int ring, int segment) {
-        const float r = radius_ - (radius_ - innerRadius_) * static_cast<float>(ring) /
-                                      static_cast<float>(rings);
-        return pointAt(
-            r, 2 * kPi * static_cast<float>(segment % segments) / static_cast<float>(segments));
-    };
     Tessellation tessellation;
-    for (int ring = 0; ring < rings; ++ring)
-        for (int segment = 0; segment < segments; ++segment) {
-            // Counter-clockwise about the normal: outer edge first, then inwards.
-            const Vec3 o0 = at(ring, segment), o1 = at(ring, segment + 1);
-            const Vec3 i0 = at(ring + 1, segment), i1 = at(ring + 1, segment + 1);
-            tessellation.facets.push_back({{o0, o1, i1}, 0});
-            // The innermost ring of a full disk closes on the centre: one triangle.
-            if (ring + 1 < rings || innerRadius_ > 0)
-                tessellation.facets.push_back({{o0, i1, i0}, 0});
-        }
+    addFlatRings(
+        center_, radius_, innerRadius_, segments, piecesFor(radius_ - innerRadius_),
+        [&](int segment) {
+            const float phi = 2 * kPi * static_cast<float>(segment) / static_cast<float>(segments);
+            return std::cos(phi) * tangent_ + std::sin(phi) * bitangent_;
+        },
+        0, tessellation.facets);
     return tessellation;
 }
 
