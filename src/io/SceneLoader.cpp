@@ -9,6 +9,8 @@
 
 #include "accel/Mesh.h"
 #include "geometry/Box.h"
+#include "geometry/Cone.h"
+#include "geometry/Cylinder.h"
 #include "geometry/Disk.h"
 #include "geometry/Instance.h"
 #include "geometry/Plane.h"
@@ -243,6 +245,8 @@ const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectType
         {"mesh", "a mesh", &Reader::loadMeshObject},
         {"disk", "a disk", &Reader::loadShape<Disk>},
         {"box", "a box", &Reader::loadShape<Box>},
+        {"cylinder", "a cylinder", &Reader::loadShape<Cylinder>},
+        {"cone", "a cone", &Reader::loadShape<Cone>},
     };
     return types;
 }

@@ -13,6 +13,8 @@
 #include "TestSupport.h"
 #include "accel/Mesh.h"
 #include "geometry/Box.h"
+#include "geometry/Cone.h"
+#include "geometry/Cylinder.h"
 #include "geometry/Disk.h"
 #include "geometry/Instance.h"
 #include "geometry/Plane.h"
@@ -92,6 +94,38 @@ std::vector<ShapeCase> shapeCases() {
              return std::make_unique<Instance>(
                  std::make_shared<Box>(Vec3(-1), Vec3(0.5f, 1, 1), nullptr), stretchAndTurn,
                  &kMaterial);
+         },
+         false},
+        {"Cylinder",
+         [] {
+             return std::make_unique<Cylinder>(Vec3(0.1f, -0.6f, 0.2f), Vec3(-0.3f, 0.7f, 0.1f),
+                                               0.5f, false, &kMaterial);
+         },
+         false},
+        {"OpenCylinder",
+         [] {
+             return std::make_unique<Cylinder>(Vec3(0, -1, 0), Vec3(0, 1, 0), 0.7f, true,
+                                               &kMaterial);
+         },
+         false},
+        {"TruncatedCone",
+         [] {
+             return std::make_unique<Cone>(Vec3(0.2f, -0.5f, 0), 0.9f, Vec3(0, 0.6f, 0.3f), 0.3f,
+                                           false, &kMaterial);
+         },
+         false},
+        {"PointedCone",
+         [] {
+             return std::make_unique<Cone>(Vec3(0, -0.5f, 0), 0.8f, Vec3(0.2f, 0.9f, 0), 0, false,
+                                           &kMaterial);
+         },
+         false},
+        {"InstancedCone",
+         [=] {
+             return std::make_unique<Instance>(
+                 std::make_shared<Cone>(Vec3(0, -0.5f, 0), 0.4f, Vec3(0, 0.5f, 0), 0.8f, false,
+                                        nullptr),
+                 stretchAndTurn, &kMaterial);
          },
          false},
         {"InstancedSphere",
