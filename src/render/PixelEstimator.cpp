@@ -43,10 +43,20 @@ public:
         ++count_;
     }
 
+    // The filtered value, each channel no darker than kLobeFloor times the pixel's mean under
+    // |filter|. With a negative-lobed filter (Mitchell) one bright sample in a lobe (a highlight,
+    // a light in a mirror) can outweigh the pixel's own samples and make it negative, which
+    // shows as a black speckle; the mean under |filter| is a plain weighted average, never
+    // negative and black only where every sample is. Converged ringing seldom darkens a pixel
+    // below half that mean, so the floor removes the noise and keeps the sharpening. For a
+    // filter without negative lobes the two means are the same: the floor changes nothing.
     Color value() const {
         const WeightedSums& s = sums();
-        return {static_cast<float>(s.r / s.weight), static_cast<float>(s.g / s.weight),
-                static_cast<float>(s.b / s.weight)};
+        const auto channel = [&](double signedSum, double magnitudeSum) {
+            return static_cast<float>(
+                std::max(signedSum / s.weight, kLobeFloor * magnitudeSum / magnitude_.weight));
+        };
+        return {channel(s.r, magnitude_.r), channel(s.g, magnitude_.g), channel(s.b, magnitude_.b)};
     }
 
     double luminanceValue() const { return sums().y / sums().weight; }
@@ -74,6 +84,8 @@ private:
     const WeightedSums& sums() const {
         return signed_.weight >= 0.5 * static_cast<double>(count_) ? signed_ : magnitude_;
     }
+
+    static constexpr double kLobeFloor = 0.5;
 
     WeightedSums signed_, magnitude_;
     double squaredWeights_ = 0, squaredWeightsY_ = 0, squaredWeightsY2_ = 0;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -73,6 +74,68 @@ INSTANTIATE_TEST_SUITE_P(
                     {"spp", 64},
                     {"adaptive", {{"min_spp", 4}, {"threshold", 0.001}}}}}),
     CaseName());
+
+// A mirror, a glass sphere and a fine checkerboard to the horizon under a bright light: pixels
+// whose neighbours differ a lot, where a negative-lobed filter with few samples goes wrong.
+nlohmann::json mirrorGlassChecker(const std::string& filter, int spp) {
+    return {
+        {"render",
+         {{"width", 96}, {"height", 64}, {"spp", spp}, {"max_depth", 4}, {"filter", filter}}},
+        {"camera", {{"position", {0, 1.2, 6}}, {"look_at", {0, 0.7, 0}}, {"vfov", 45}}},
+        {"background", {0.3, 0.4, 0.7}},
+        {"ambient", 0.02},
+        {"materials",
+         {{"checker",
+           {{"diffuse",
+             {{"checker",
+               {{"even", {0.9, 0.9, 0.9}}, {"odd", {0.02, 0.02, 0.02}}, {"scale", 0.4}}}}},
+            {"specular", 0.8},
+            {"shininess", 200}}},
+          {"mirror", {{"diffuse", 0.02}, {"specular", 1}, {"shininess", 800}, {"reflection", 0.9}}},
+          {"glass",
+           {{"diffuse", 0},
+            {"specular", 1},
+            {"shininess", 400},
+            {"transmission", 0.95},
+            {"ior", 1.5}}}}},
+        {"objects",
+         {{{"type", "plane"}, {"point", {0, 0, 0}}, {"normal", {0, 1, 0}}, {"material", "checker"}},
+          {{"type", "sphere"}, {"center", {-1.2, 0.9, 0}}, {"radius", 0.9}, {"material", "mirror"}},
+          {{"type", "sphere"}, {"center", {1.0, 0.7, 1}}, {"radius", 0.7}, {"material", "glass"}}}},
+        {"lights",
+         {{{"type", "point"}, {"position", {-3, 6, 4}}, {"intensity", 400}},
+          {{"type", "point"}, {"position", {4, 3, 2}}, {"intensity", 150}}}}};
+}
+
+// Black once stored in 8 bits: every channel below half a step of the sRGB encoding.
+bool isBlack(const Image::Rgb& pixel) {
+    return std::all_of(pixel.begin(), pixel.end(), [](float c) { return c < 0.5f / 255 / 12.92f; });
+}
+
+class CliFilterRange : public testing::TestWithParam<int> {};
+
+// Radiance is never negative, and neither is any filtered pixel; nor is a pixel black where the
+// box filter (a plain average of the pixel's own samples) sees light.
+TEST_P(CliFilterRange, NoFilterMakesANegativeOrBlackPixel) {
+    const int spp = GetParam();
+    const Image box = renderScene(mirrorGlassChecker("box", spp)).image;
+    for (const char* filter : {"tent", "gaussian", "mitchell"}) {
+        const Image image = renderScene(mirrorGlassChecker(filter, spp)).image;
+        int negative = 0, blackSpeckles = 0;
+        float minimum = 0;
+        for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+            for (const float c : image.pixels[i]) {
+                minimum = std::min(minimum, c);
+                if (c < 0) ++negative;
+            }
+            if (isBlack(image.pixels[i]) && !isBlack(box.pixels[i])) ++blackSpeckles;
+        }
+        EXPECT_EQ(negative, 0) << filter << " at " << spp << " spp: minimum " << minimum;
+        EXPECT_EQ(blackSpeckles, 0) << filter << " at " << spp << " spp";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Spp, CliFilterRange, testing::Values(1, 4, 16));
 
 // Runs lancer on `scene` (not quiet) and returns the run, after checking it succeeded.
 RunResult runOn(const nlohmann::json& scene, const std::vector<std::string>& options) {
