@@ -24,6 +24,7 @@
 #include "radiosity/RadiositySolver.h"
 #include "render/Renderer.h"
 #include "scene/InputError.h"
+#include "util/DidYouMean.h"
 
 namespace fs = std::filesystem;
 using namespace lancer;
@@ -303,7 +304,14 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 1 << 10));
     app.add_option("--integrator", options.integrator,
                    IntegratorRegistry::table().quotedNames() + " (overrides the scene)")
-        ->check(CLI::IsMember(IntegratorRegistry::table().names()));
+        ->check(CLI::Validator(
+            [](const std::string& name) {
+                const std::vector<std::string> valid = IntegratorRegistry::table().names();
+                return std::find(valid.begin(), valid.end(), name) != valid.end()
+                           ? std::string()
+                           : unknownName("integrator", name, valid);
+            },
+            "NAME"));
     app.add_option("--threads", options.threads, "Worker threads; 0 = all cores")
         ->check(CLI::Range(0, 1024));
     app.add_option("--seed", options.seed,

@@ -6,6 +6,7 @@
 #include "integrators/RadiosityIntegrator.h"
 #include "integrators/WhittedIntegrator.h"
 #include "scene/Scene.h"
+#include "util/DidYouMean.h"
 
 namespace lancer {
 
@@ -23,7 +24,7 @@ std::unique_ptr<Integrator> IntegratorRegistry::create(const Scene& scene,
                                                        const IntegratorSetup& setup) {
     const std::string& name = scene.settings().integrator;
     const IntegratorEntry* entry = table().find(name);
-    if (!entry) throw std::invalid_argument("unknown integrator \"" + name + "\"");
+    if (!entry) throw std::invalid_argument(unknownName("integrator", name, table().names()));
     return entry->create(scene, setup);
 }
 

@@ -217,9 +217,7 @@ public:
         const std::string text = loader_.readString(value);
         const auto it = std::find(options.begin(), options.end(), text);
         if (it == options.end()) {
-            loader_.fail(value, "unknown " + key + " " + inQuotes(text) +
-                                    didYouMean(text, options) + "; expected " +
-                                    quotedNames(options));
+            loader_.fail(value, unknownName(key, text, options));
         }
         return static_cast<std::size_t>(it - options.begin());
     }
@@ -513,7 +511,9 @@ const Material* SceneLoader::Reader::materialOf(const Node& object) {
     std::vector<std::string> names;
     for (const auto& entry : materials_)
         names.push_back(entry.first);
-    fail(node, "material " + inQuotes(name) + " is not defined" + didYouMean(name, names));
+    fail(node, "material " + inQuotes(name) + " is not defined" + didYouMean(name, names) +
+                   (names.empty() ? "; the scene's \"materials\" defines none"
+                                  : "; expected " + quotedNames(names)));
 }
 
 void SceneLoader::Reader::loadObject(const Node& node) {
@@ -731,9 +731,7 @@ const Entry& SceneLoader::Reader::lookUp(const Registry<Entry>& table, const Nod
                                          const std::string& what) const {
     const std::string text = readString(name);
     const Entry* entry = table.find(text);
-    if (!entry)
-        fail(name, "unknown " + what + " " + inQuotes(text) + didYouMean(text, table.names()) +
-                       "; expected " + table.quotedNames());
+    if (!entry) fail(name, unknownName(what, text, table.names()));
     return *entry;
 }
 
@@ -755,8 +753,8 @@ void SceneLoader::Reader::checkKeys(const Node& object, const std::string& what,
                                     const std::vector<std::string>& allowed) const {
     for (const auto& [key, value] : object.value.items()) {
         if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-        failAtKey(object[key],
-                  "unknown key " + inQuotes(key) + " in " + what + didYouMean(key, allowed));
+        failAtKey(object[key], "unknown key " + inQuotes(key) + " in " + what +
+                                   didYouMean(key, allowed) + "; expected " + quotedNames(allowed));
     }
 }
 

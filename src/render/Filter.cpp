@@ -7,6 +7,7 @@
 #include "render/MitchellFilter.h"
 #include "render/TentFilter.h"
 #include "scene/FilterSettings.h"
+#include "util/DidYouMean.h"
 
 namespace lancer {
 
@@ -34,7 +35,7 @@ const Registry<Filter::Type>& Filter::types() {
 
 std::unique_ptr<Filter> Filter::create(const FilterSettings& settings) {
     const Type* type = types().find(settings.type);
-    if (!type) throw std::invalid_argument("unknown filter \"" + settings.type + "\"");
+    if (!type) throw std::invalid_argument(unknownName("filter", settings.type, types().names()));
     const float radius = settings.radius.value_or(type->defaultRadius);
     if (!(radius > 0)) throw std::invalid_argument("the filter radius must be greater than 0");
     return type->create(radius);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 
+#include "util/Registry.h"
+
 namespace lancer {
 
 namespace {
@@ -27,20 +29,32 @@ std::size_t editDistance(const std::string& a, const std::string& b) {
 
 }  // namespace
 
-std::string didYouMean(const std::string& word, const std::vector<std::string>& candidates) {
-    const std::string* best = nullptr;
+std::optional<std::size_t> nearestName(const std::string& word,
+                                       const std::vector<std::string>& candidates) {
+    std::optional<std::size_t> best;
     std::size_t bestDistance = 0;
-    for (const std::string& candidate : candidates) {
-        const std::size_t d = editDistance(word, candidate);
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        const std::size_t d = editDistance(word, candidates[i]);
         if (!best || d < bestDistance) {
-            best = &candidate;
+            best = i;
             bestDistance = d;
         }
     }
     // Two edits, or a third of the word for long words, still reads as a typo.
     const std::size_t tolerance = std::max<std::size_t>(2, word.size() / 3);
-    if (!best || bestDistance > tolerance || bestDistance >= word.size()) return "";
-    return " (did you mean \"" + *best + "\"?)";
+    if (!best || bestDistance > tolerance || bestDistance >= word.size()) return std::nullopt;
+    return best;
+}
+
+std::string didYouMean(const std::string& word, const std::vector<std::string>& candidates) {
+    const std::optional<std::size_t> best = nearestName(word, candidates);
+    return best ? " (did you mean \"" + candidates[*best] + "\"?)" : "";
+}
+
+std::string unknownName(const std::string& what, const std::string& word,
+                        const std::vector<std::string>& valid) {
+    return "unknown " + what + " \"" + word + "\"" + didYouMean(word, valid) + "; expected " +
+           quotedNames(valid);
 }
 
 }  // namespace lancer

@@ -51,5 +51,18 @@ TEST(DidYouMeanTest, SuggestsNothingWithoutCandidates) {
     EXPECT_EQ(didYouMean("glass", {}), "");
 }
 
+TEST(DidYouMeanTest, NearestNameIsTheIndexOfTheSuggestion) {
+    EXPECT_EQ(nearestName("flor", kMaterials), 2u);
+    EXPECT_EQ(nearestName("banana", kMaterials), std::nullopt);
+}
+
+TEST(DidYouMeanTest, UnknownNameSuggestsAndListsTheValidOnes) {
+    EXPECT_EQ(unknownName("material", "glas", kMaterials),
+              R"(unknown material "glas" (did you mean "glass"?); expected "glass", "mirror", )"
+              R"("floor" or "red")");
+    EXPECT_EQ(unknownName("material", "wood", kMaterials),
+              R"(unknown material "wood"; expected "glass", "mirror", "floor" or "red")");
+}
+
 }  // namespace
 }  // namespace lancer

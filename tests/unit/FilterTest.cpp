@@ -116,6 +116,13 @@ TEST(FilterTest, MitchellHasTheOneThirdKernelWithNegativeLobes) {
 
 TEST(FilterTest, FactoryRejectsUnknownTypesAndBadRadii) {
     EXPECT_THROW(makeFilter("lanczos"), std::invalid_argument);
+    try {
+        makeFilter("mitchel");
+        ADD_FAILURE() << "no exception";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_STREQ(e.what(), R"(unknown filter "mitchel" (did you mean "mitchell"?); expected )"
+                               R"("box", "tent", "gaussian" or "mitchell")");
+    }
     EXPECT_THROW(makeFilter("box", 0.0f), std::invalid_argument);
     EXPECT_THROW(makeFilter("tent", -1.0f), std::invalid_argument);
     EXPECT_THROW(makeFilter("gaussian", std::nanf("")), std::invalid_argument);
