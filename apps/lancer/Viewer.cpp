@@ -61,6 +61,13 @@ Viewer::Viewer(const std::string& name, int width, int height)
       pixels8_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, 0),
       changed_{0, 0, width, height} {}
 
+std::string Viewer::libraryVersion() {
+    SDL_version linked;
+    SDL_GetVersion(&linked);
+    return "SDL2 " + std::to_string(linked.major) + "." + std::to_string(linked.minor) + "." +
+           std::to_string(linked.patch);
+}
+
 std::unique_ptr<Viewer> Viewer::open(const std::string& name, int width, int height,
                                      std::string& error) {
     // Ctrl-C stays the program's: SDL would turn it into a quit event.

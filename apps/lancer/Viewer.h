@@ -25,6 +25,8 @@ public:
     // Null, with the reason in `error`, when there is no display to open it on.
     static std::unique_ptr<Viewer> open(const std::string& name, int width, int height,
                                         std::string& error);
+    // "SDL2 2.26.5": the version of the SDL library linked, for lancer --version.
+    static std::string libraryVersion();
     ~Viewer();
     Viewer(const Viewer&) = delete;
     Viewer& operator=(const Viewer&) = delete;

@@ -9,11 +9,15 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <initializer_list>
 #include <iostream>
 #include <optional>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "BuildInfo.h"
 #include "LiveRender.h"
 #include "LiveSolve.h"
 #include "ProgressBar.h"
@@ -25,6 +29,7 @@
 #include "render/Renderer.h"
 #include "scene/InputError.h"
 #include "util/DidYouMean.h"
+#include "util/Registry.h"
 
 namespace fs = std::filesystem;
 using namespace lancer;
@@ -84,6 +89,39 @@ std::optional<PixelWindow> parseCrop(const std::string& text, int width, int hei
         return std::nullopt;
     }
     return w;
+}
+
+// For an argument CLI11 did not expect: the first unknown option, with the valid ones and a
+// suggestion, as the scene loader gives for a key; CLI11's own message for a stray argument.
+std::string unexpectedArguments(const CLI::App& app, int argc, char** argv,
+                                const CLI::ExtrasError& error) {
+    std::vector<std::string> names;    // the options, then the other names they may be known by
+    std::vector<std::string> meaning;  // the option each of `names` stands for
+    std::vector<std::string> valid;
+    for (const CLI::Option* option : app.get_options()) {
+        for (const std::string& name : option->get_lnames()) {
+            names.push_back("--" + name);
+            meaning.push_back("--" + name);
+            valid.push_back("--" + name);
+        }
+    }
+    // What other renderers call some of the options, to suggest ours.
+    for (const auto& [alias, option] : std::initializer_list<std::pair<const char*, const char*>>{
+             {"--samples", "--spp"}, {"--depth", "--max-depth"}, {"--jobs", "--threads"}}) {
+        names.emplace_back(alias);
+        meaning.emplace_back(option);
+    }
+    for (int i = 1; i < argc; ++i) {
+        const std::string argument = argv[i];
+        if (argument.size() < 2 || argument[0] != '-') continue;
+        const std::string name = argument.substr(0, argument.find('='));
+        if (app.get_option_no_throw(name)) continue;
+        const std::optional<std::size_t> nearest = nearestName(name, names);
+        return "unknown option \"" + name + "\"" +
+               (nearest ? " (did you mean \"" + meaning[*nearest] + "\"?)" : "") + "; expected " +
+               quotedNames(valid);
+    }
+    return std::string(error.what()) + " (see lancer --help)";
 }
 
 void printStatistics(const Scene& scene, const RenderCounters& counters) {
@@ -248,7 +286,8 @@ int run(const Options& options) {
         if (!options.quiet)
             std::cerr << "lancer: " << output.string() << ": " << settings.width << "x"
                       << settings.height << ", " << describeSamples(settings, result.counters)
-                      << ", " << result.threads << " threads, "
+                      << ", " << result.threads
+                      << (result.threads == 1 ? " thread, " : " threads, ")
                       << describeRate(result.counters.rays, result.seconds) << '\n';
         return 0;
     };
@@ -277,8 +316,8 @@ int run(const Options& options) {
 int main(int argc, char** argv) {
     Options options;
     CLI::App app{
-        "lancer: a ray tracer (Whitted, path tracing, radiosity). Renders SCENE.json to "
-        "an image.",
+        "lancer: a CPU ray tracer. Renders SCENE.json to an image by Whitted ray tracing, path "
+        "tracing (the ground truth) or radiosity seen through the ray tracer.",
         "lancer"};
     std::string names = "\nWhat a scene can name (docs/SCENE-FORMAT.md):";
     for (const SceneLoader::Vocabulary& v : SceneLoader::vocabulary()) {
@@ -287,7 +326,7 @@ int main(int argc, char** argv) {
             names += " " + name;
     }
     app.footer(names);
-    app.set_version_flag("--version", std::string("lancer ") + LANCER_VERSION);
+    app.set_version_flag("--version", BuildInfo::describe());
     app.add_option("scene", options.scene, "Scene file (JSON, see docs/SCENE-FORMAT.md)")
         ->required();
     app.add_option(
@@ -315,7 +354,14 @@ int main(int argc, char** argv) {
     app.add_option("--threads", options.threads, "Worker threads; 0 = all cores")
         ->check(CLI::Range(0, 1024));
     app.add_option("--seed", options.seed,
-                   "Random seed: the same seed and scene give the same image");
+                   "Random seed: the same seed and scene give the same image")
+        // CLI11 would take a negative seed, wrapped around to a huge unsigned one.
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                return text.rfind('-', 0) == 0 ? "the seed must be a whole number >= 0, got " + text
+                                               : std::string();
+            },
+            "SEED"));
     app.add_option("--crop", options.crop,
                    "Render only the pixels X0,Y0,X1,Y1 (inclusive-exclusive)");
     app.add_flag("--window", options.window, "Show the image in a window while it renders");
@@ -333,6 +379,8 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
+    } catch (const CLI::ExtrasError& e) {
+        return usageError(unexpectedArguments(app, argc, argv, e));
     } catch (const CLI::ParseError& e) {
         return usageError(std::string(e.what()) + " (see lancer --help)");
     }

@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <utility>
 
 #include "LancerRun.h"
 #include "io/SceneLoader.h"
@@ -158,11 +159,46 @@ TEST(CliHelp, ListsWhatAScenesCanNameAsTheDocumentationDoes) {
     }
 }
 
+TEST(CliHelp, DescribesWhatLancerIs) {
+    const TempFolder folder;
+    const std::string help = runLancer({"--help"}, folder.path()).standardOutput;
+    EXPECT_EQ(help.find("Whitted-style"), std::string::npos) << help;
+    for (const char* fragment : {"Whitted ray tracing", "path tracing", "radiosity"})
+        EXPECT_NE(help.find(fragment), std::string::npos) << fragment;
+}
+
 TEST(CliVersion, PrintsTheVersion) {
     const TempFolder folder;
     const RunResult run = runLancer({"--version"}, folder.path());
     EXPECT_EQ(run.exitStatus, 0) << run;
     EXPECT_EQ(run.standardOutput.rfind("lancer ", 0), 0u) << run.standardOutput;
+}
+
+TEST(CliVersion, SaysTheBuildAndTheLibraries) {
+    const TempFolder folder;
+    const std::string version = runLancer({"--version"}, folder.path()).standardOutput;
+    EXPECT_TRUE(version.find("built with GCC ") != std::string::npos ||
+                version.find("built with Clang ") != std::string::npos ||
+                version.find("built with MSVC ") != std::string::npos)
+        << version;
+    EXPECT_NE(version.find(", without MPI\n"), std::string::npos) << version;
+    for (const char* library :
+         {"FreeImage 3.", "nlohmann-json 3.", "tinyobjloader ", "SDL2 2.", "oneTBB 20", "CLI11 2."})
+        EXPECT_NE(version.find(library), std::string::npos) << library << " in " << version;
+}
+
+// The summary's thread count, in the singular for one.
+TEST(CliSummary, CountsThreadsInWords) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    for (const auto& [threads, words] :
+         {std::pair{"1", ", 1 thread, "}, std::pair{"2", ", 2 threads, "}}) {
+        const RunResult run = runLancer({"scene.json", "-o", "out.png", "--width", "16", "--height",
+                                         "12", "--spp", "1", "--threads", threads},
+                                        folder.path());
+        ASSERT_EQ(run.exitStatus, 0) << run;
+        EXPECT_NE(run.standardError.find(words), std::string::npos) << run.standardError;
+    }
 }
 
 }  // namespace
