@@ -1,5 +1,7 @@
 #include "LiveSolve.h"
 
+#include "ProgressBar.h"
+
 #include <cstdio>
 #include <exception>
 #include <memory>
@@ -85,13 +87,7 @@ void LiveSolve::showPreview() {
 std::string LiveSolve::describe() const {
     std::lock_guard lock(mutex_);
     if (!progress_) return "radiosity: preparing";
-    const RadiosityProgress& p = *progress_;
-    char text[160];
-    std::snprintf(text, sizeof text, "radiosity: %s, %llu shots, unshot %.3g W (%.3g%% of %.4g W)",
-                  RadiosityProgress::nameOf(p.phase), static_cast<unsigned long long>(p.shots),
-                  p.unshotPower, p.initialPower > 0 ? 100 * p.unshotPower / p.initialPower : 0.0,
-                  p.initialPower);
-    return text;
+    return ProgressBar::describe(*progress_);
 }
 
 }  // namespace lancer

@@ -162,9 +162,19 @@ std::string describeRate(std::uint64_t rays, double seconds) {
     return text;
 }
 
+// The solve, its progress on the terminal's bar.
+std::optional<RadiositySolution> solveOnTheTerminal(RadiositySolver& solver,
+                                                    const Options& options) {
+    ProgressBar progress(!options.quiet && isatty(STDERR_FILENO));
+    std::optional<RadiositySolution> solution =
+        solver.solve([&](const RadiosityProgress& p) { progress.update(p); }, &interruptRequested);
+    progress.finish();
+    return solution;
+}
+
 // The radiosity solution, solved or loaded (and saved if asked), reported in one line; the solve's
-// progress shows in the viewer, if any. None when the solve was stopped (Ctrl-C, or the window
-// closed).
+// progress shows in the viewer, if any, or on the terminal. None when the solve was stopped
+// (Ctrl-C, or the window closed).
 std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiositySolver& solver,
                                                   const Options& options, Viewer* viewer) {
     RadiositySolution solution;
@@ -177,7 +187,7 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
     } else {
         std::optional<RadiositySolution> solved =
             viewer ? LiveSolve(*viewer, scene, solver, options.threads).run(interruptRequested)
-                   : solver.solve({}, &interruptRequested);
+                   : solveOnTheTerminal(solver, options);
         if (!solved) return std::nullopt;
         solution = std::move(*solved);
     }
