@@ -21,6 +21,7 @@
 #include "LiveRender.h"
 #include "LiveSolve.h"
 #include "ProgressBar.h"
+#include "TerminalSolve.h"
 #include "Viewer.h"
 #include "integrators/IntegratorRegistry.h"
 #include "io/ImageWriter.h"
@@ -162,12 +163,13 @@ std::string describeRate(std::uint64_t rays, double seconds) {
     return text;
 }
 
-// The solve, its progress on the terminal's bar.
+// The solve, its progress on the terminal's bar (if stderr is one and not --quiet).
 std::optional<RadiositySolution> solveOnTheTerminal(RadiositySolver& solver,
                                                     const Options& options) {
-    ProgressBar progress(!options.quiet && isatty(STDERR_FILENO));
+    if (options.quiet || !isatty(STDERR_FILENO)) return solver.solve({}, &interruptRequested);
+    ProgressBar progress(true);
     std::optional<RadiositySolution> solution =
-        solver.solve([&](const RadiosityProgress& p) { progress.update(p); }, &interruptRequested);
+        TerminalSolve(solver, progress).run(interruptRequested);
     progress.finish();
     return solution;
 }

@@ -100,6 +100,27 @@ TEST(CliProgressBar, ShowsTheRadiositySolve) {
     EXPECT_GT(bars, 0) << run.output();
 }
 
+TEST(CliProgressBar, CtrlCStopsTheSolveItShows) {
+    const TempFolder folder;
+    nlohmann::json scene = loadWhittedScene();
+    scene["render"]["integrator"] = "radiosity";
+    scene["radiosity"] = {{"patch_size", 1}};  // seconds of solving
+    folder.write("scene.json", scene.dump());
+    bool interrupted = false;
+    const TerminalRun run(
+        {"scene.json", "-o", "out.png", "--width", "32", "--height", "24"}, folder.path(), 120,
+        [&](TerminalRun& terminal, const std::string& output) {
+            if (interrupted || output.find("radiosity: shooting") == std::string::npos) return;
+            terminal.interrupt();
+            interrupted = true;
+        });
+    ASSERT_TRUE(interrupted) << run.output();
+    EXPECT_EQ(run.exitStatus(), 130) << run.output();
+    EXPECT_NE(run.output().find("interrupted during the radiosity solve"), std::string::npos)
+        << run.output();
+    EXPECT_EQ(folder.entries(), (std::vector<std::string>{"scene.json"}));
+}
+
 TEST(CliProgressBar, QuietDrawsNothing) {
     const TempFolder folder;
     std::vector<std::string> arguments = whittedRender(folder);

@@ -38,9 +38,9 @@ TerminalRun::TerminalRun(const std::vector<std::string>& arguments,
     const std::string folder = workingFolder.string();
 
     winsize size = sizeOf(columns);
-    const pid_t pid = forkpty(&master_, nullptr, nullptr, &size);
-    if (pid < 0) throw std::runtime_error("forkpty failed");
-    if (pid == 0) {
+    pid_ = forkpty(&master_, nullptr, nullptr, &size);
+    if (pid_ < 0) throw std::runtime_error("forkpty failed");
+    if (pid_ == 0) {
         if (chdir(folder.c_str()) != 0) _exit(127);
         signal(SIGINT, SIG_DFL);
         execv(cArgv[0], cArgv.data());
@@ -58,12 +58,12 @@ TerminalRun::TerminalRun(const std::vector<std::string>& arguments,
             if (onOutput) onOutput(*this, output_);
         }
         if (std::chrono::steady_clock::now() > deadline) {
-            kill(pid, SIGKILL);
+            kill(pid_, SIGKILL);
             break;
         }
     }
     int status = 0;
-    waitpid(pid, &status, 0);
+    waitpid(pid_, &status, 0);
     close(master_);
     if (WIFEXITED(status)) exitStatus_ = WEXITSTATUS(status);
 }
@@ -71,6 +71,10 @@ TerminalRun::TerminalRun(const std::vector<std::string>& arguments,
 void TerminalRun::resize(int columns) const {
     const winsize size = sizeOf(columns);
     ioctl(master_, TIOCSWINSZ, &size);
+}
+
+void TerminalRun::interrupt() const {
+    kill(pid_, SIGINT);
 }
 
 std::vector<std::string> TerminalRun::pieces() const {

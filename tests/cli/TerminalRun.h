@@ -23,6 +23,8 @@ public:
 
     // Makes the terminal `columns` wide (lancer sees it at its next draw).
     void resize(int columns) const;
+    // Ctrl-C.
+    void interrupt() const;
 
     int exitStatus() const { return exitStatus_; }
     // All that was written to the terminal (lines end in "\r\n" there).
@@ -32,6 +34,7 @@ public:
     std::vector<std::string> pieces() const;
 
 private:
+    int pid_ = -1;
     int master_ = -1;
     int exitStatus_ = -1;
     std::string output_;
