@@ -362,7 +362,7 @@ int main(int argc, char** argv) {
                            ? std::string()
                            : unknownName("integrator", name, valid);
             },
-            "NAME"));
+            ""));
     app.add_option("--threads", options.threads, "Worker threads; 0 = all cores")
         ->check(CLI::Range(0, 1024));
     app.add_option("--seed", options.seed,
@@ -373,7 +373,7 @@ int main(int argc, char** argv) {
                 return text.rfind('-', 0) == 0 ? "the seed must be a whole number >= 0, got " + text
                                                : std::string();
             },
-            "SEED"));
+            ""));
     app.add_option("--crop", options.crop,
                    "Render only the pixels X0,Y0,X1,Y1 (inclusive-exclusive)");
     app.add_flag("--window", options.window, "Show the image in a window while it renders");
