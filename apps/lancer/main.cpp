@@ -222,10 +222,17 @@ int run(const Options& options) {
     const fs::path output = options.output.empty()
                                 ? fs::path(options.scene).replace_extension(".png")
                                 : fs::path(options.output);
-    if (!ImageWriter::supports(output))
-        return usageError("unknown output format \"" + output.extension().string() + "\" for " +
-                          output.string() + " (expected one of " +
+    if (!ImageWriter::supports(output)) {
+        // supportedExtensions() is ".png, .jpg, ...": its names, for the suggestion.
+        std::vector<std::string> extensions;
+        std::istringstream list(ImageWriter::supportedExtensions());
+        for (std::string extension; std::getline(list >> std::ws, extension, ',');)
+            extensions.push_back(extension);
+        const std::string extension = output.extension().string();
+        return usageError("unknown output format \"" + extension + "\" for " + output.string() +
+                          didYouMean(extension, extensions) + " (expected one of " +
                           ImageWriter::supportedExtensions() + ")");
+    }
     const fs::path outputFolder =
         output.parent_path().empty() ? fs::path(".") : output.parent_path();
     if (!fs::is_directory(outputFolder))
