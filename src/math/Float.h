@@ -6,6 +6,16 @@
 #include <limits>
 #include <numbers>
 
+// Forces a function inline where the compiler's size heuristics would not, for code at the heart
+// of a hot loop.
+#if defined(__GNUC__)
+#define LANCER_ALWAYS_INLINE [[gnu::always_inline]] inline
+#elif defined(_MSC_VER)
+#define LANCER_ALWAYS_INLINE __forceinline
+#else
+#define LANCER_ALWAYS_INLINE inline
+#endif
+
 namespace lancer {
 
 constexpr float kPi = std::numbers::pi_v<float>;

@@ -2,19 +2,11 @@
 
 #include <cmath>
 
+#include "math/Float.h"
+
 #if defined(__SSE2__) || defined(_M_X64)
 #include <emmintrin.h>
 #define LANCER_FLOAT4_SSE 1
-#endif
-
-// Forces a function inline where the compiler's size heuristics would not, for code at the heart
-// of a hot loop.
-#if defined(__GNUC__)
-#define LANCER_ALWAYS_INLINE [[gnu::always_inline]] inline
-#elif defined(_MSC_VER)
-#define LANCER_ALWAYS_INLINE __forceinline
-#else
-#define LANCER_ALWAYS_INLINE inline
 #endif
 
 namespace lancer {

@@ -18,7 +18,8 @@ struct Ray {
 // surface along the geometric normal n, to the side that direction w leaves towards, far enough
 // that a ray spawned there cannot find the surface it starts on again (pbrt's error-bounded
 // offset, used instead of a scene-scale-dependent epsilon).
-inline Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n, const Vec3& w) {
+LANCER_ALWAYS_INLINE Vec3 offsetRayOrigin(const Vec3& p, const Vec3& pError, const Vec3& n,
+                                          const Vec3& w) {
     const float d = dot(abs(n), pError);
     Vec3 offset = d * n;
     if (dot(w, n) < 0) offset = -offset;

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "math/Float.h"
+
 namespace lancer {
 
 // A 3-component vector. Points, directions and normals are all Vec3: the distinction is kept by
@@ -84,7 +86,7 @@ T length(const Vec3T<T>& v) {
     return std::sqrt(dot(v, v));
 }
 template <typename T>
-Vec3T<T> normalize(const Vec3T<T>& v) {
+LANCER_ALWAYS_INLINE Vec3T<T> normalize(const Vec3T<T>& v) {
     return v / length(v);
 }
 template <typename T>
@@ -126,7 +128,7 @@ constexpr Vec3T<T> reflect(const Vec3T<T>& wo, const Vec3T<T>& n) {
 
 // An orthonormal basis (s, t) completing the unit vector n (Duff et al. 2017, branchless).
 template <typename T>
-void coordinateSystem(const Vec3T<T>& n, Vec3T<T>& s, Vec3T<T>& t) {
+LANCER_ALWAYS_INLINE void coordinateSystem(const Vec3T<T>& n, Vec3T<T>& s, Vec3T<T>& t) {
     const T sign = std::copysign(T(1), n.z);
     const T a = T(-1) / (sign + n.z);
     const T b = n.x * n.y * a;
