@@ -127,20 +127,21 @@ inline Bvh::RayBoxSetup::RayBoxSetup(const Ray& ray) {
 }
 
 // The slab test (pbrt 6.8.2), unrolled on the node's floats with the entry corner chosen per axis
-// up front, so that each axis costs two subtractions, two products and no swap. tMax is widened
-// like the far distances: the entry distance, rounded up, may pass a primitive's t, rounded
-// down, by an ulp or two, and a box around a primitive hit just before tMax must still be entered.
+// up front, so that each axis costs two subtractions, two products and no swap. The far
+// distances and tMax are widened: the entry distance, rounded up, may pass a primitive's t,
+// rounded down, by an ulp or two, and a box around a primitive hit just before tMax must still be
+// entered. Rounding a product is monotone in it, so widening the nearest of them once gives the
+// nearest of the widened ones.
 inline bool Bvh::RayBoxSetup::hits(const BvhNode& node, float tMax) const {
-    float t0 = 0, t1 = tMax * kSlabWidening;
+    float t0 = 0, t1 = tMax;
     for (int i = 0; i < 3; ++i) {
         const float tNear = (node.bounds[nearCorner[i]][i] - origin[i]) * invDirection[i];
-        const float tFar =
-            (node.bounds[1 - nearCorner[i]][i] - origin[i]) * invDirection[i] * kSlabWidening;
+        const float tFar = (node.bounds[1 - nearCorner[i]][i] - origin[i]) * invDirection[i];
         // NaN (0 * inf, a ray in a slab's plane) leaves the interval unchanged.
         t0 = tNear > t0 ? tNear : t0;
         t1 = tFar < t1 ? tFar : t1;
     }
-    return t0 <= t1;
+    return t0 <= t1 * kSlabWidening;
 }
 
 template <typename VisitLeaf>

@@ -111,21 +111,22 @@ inline WideBvh::RayBoxSetup::RayBoxSetup(const Ray& ray) {
 
 inline int WideBvh::RayBoxSetup::hits(const WideBvhNode& node, float tMax,
                                       float tNear[WideBvhNode::kWidth]) const {
+    // Widened once, as in Bvh::RayBoxSetup::hits.
     const Float4 widening(kSlabWidening);
     int mask = 0;
     for (int half = 0; half < WideBvhNode::kWidth; half += 4) {
-        Float4 t0(0.0f), t1(tMax * kSlabWidening);
+        Float4 t0(0.0f), t1(tMax);
         for (int i = 0; i < 3; ++i) {
             const Float4 nearPlane = Float4::load(node.bounds[nearCorner[i]][i] + half);
             const Float4 farPlane = Float4::load(node.bounds[1 - nearCorner[i]][i] + half);
             const Float4 tEnter = (nearPlane - origin[i]) * invDirection[i];
-            const Float4 tExit = (farPlane - origin[i]) * invDirection[i] * widening;
+            const Float4 tExit = (farPlane - origin[i]) * invDirection[i];
             // NaN (0 * inf, a ray in a slab's plane) leaves the interval unchanged.
             t0 = max(t0, tEnter);
             t1 = min(t1, tExit);
         }
         t0.store(tNear + half);
-        mask |= le(t0, t1) << half;
+        mask |= le(t0, t1 * widening) << half;
     }
     return mask;
 }
