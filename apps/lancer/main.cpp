@@ -29,6 +29,7 @@
 #include "radiosity/RadiositySolver.h"
 #include "render/Renderer.h"
 #include "scene/InputError.h"
+#include "scene/RenderSettings.h"
 #include "util/DidYouMean.h"
 #include "util/Registry.h"
 
@@ -359,7 +360,7 @@ int main(int argc, char** argv) {
     app.add_option("--spp", options.spp, "Samples per pixel (overrides the scene)")
         ->check(CLI::Range(1, 1 << 20));
     app.add_option("--max-depth", options.maxDepth, "Recursion depth (overrides the scene)")
-        ->check(CLI::Range(0, 1 << 10));
+        ->check(CLI::Range(0, RenderSettings::kMaxDepthLimit));
     app.add_option("--integrator", options.integrator,
                    IntegratorRegistry::table().quotedNames() + " (overrides the scene)")
         ->check(CLI::Validator(

@@ -169,7 +169,7 @@ private:
     bool readFlag(const Node& node) const;
     float readNumber(const Node& node) const;
     float readNumberAtLeast(const Node& node, float minimum, bool inclusive) const;
-    int readInt(const Node& node, int minimum) const;
+    int readInt(const Node& node, int minimum, int maximum = 1'000'000'000) const;
     std::string readString(const Node& node) const;
     Vec3 readVec3(const Node& node) const;
     Vec3 readDirection(const Node& node) const;
@@ -356,7 +356,8 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     if (node.has("width")) settings.width = readInt(node["width"], 1);
     if (node.has("height")) settings.height = readInt(node["height"], 1);
     if (node.has("spp")) settings.samplesPerPixel = readInt(node["spp"], 1);
-    if (node.has("max_depth")) settings.maxDepth = readInt(node["max_depth"], 0);
+    if (node.has("max_depth"))
+        settings.maxDepth = readInt(node["max_depth"], 0, RenderSettings::kMaxDepthLimit);
     if (node.has("integrator")) {
         settings.integrator =
             lookUp(IntegratorRegistry::table(), node["integrator"], "integrator").name;
@@ -797,12 +798,13 @@ float SceneLoader::Reader::readNumberAtLeast(const Node& node, float minimum,
     return v;
 }
 
-int SceneLoader::Reader::readInt(const Node& node, int minimum) const {
+int SceneLoader::Reader::readInt(const Node& node, int minimum, int maximum) const {
     if (!node.value.is_number_integer())
         fail(node, node.name + " must be a whole number, got " + describe(node.value));
     const auto v = node.value.get<long long>();
     if (v < minimum) fail(node, node.name + " must be at least " + std::to_string(minimum));
     if (v > 1'000'000'000) fail(node, node.name + " is too large");
+    if (v > maximum) fail(node, node.name + " must be at most " + std::to_string(maximum));
     return static_cast<int>(v);
 }
 

@@ -11,6 +11,10 @@ namespace lancer {
 
 // The scene file's "render" block, which the command line may override.
 struct RenderSettings {
+    // The deepest recursion the scene file and --max-depth accept: Whitted recursion takes
+    // stack per bounce, and this depth stays well inside the 8 MiB the render threads have.
+    static constexpr int kMaxDepthLimit = 1024;
+
     int width = 640;
     int height = 480;
     int samplesPerPixel = 16;  // with adaptive sampling, the most a pixel may take

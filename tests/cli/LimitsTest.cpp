@@ -1,0 +1,55 @@
+// The limits of docs/SCENE-FORMAT.md ("Limits"): the largest accepted values work, within a
+// bounded time and memory, and the first refused ones are one line and exit status 2 before any
+// work (ErrorTest checks the messages of the refused ones).
+
+#include <gtest/gtest.h>
+
+#include "LancerRun.h"
+#include "scene/RenderSettings.h"
+
+namespace lancer::test {
+namespace {
+
+using nlohmann::json;
+
+// The camera between two parallel mirrors, looking at one of them: every ray bounces until the
+// depth limit stops it.
+json facingMirrors(int maxDepth, const std::string& integrator) {
+    json scene = json::parse(R"({
+      "render": { "width": 4, "height": 4, "spp": 1 },
+      "camera": { "position": [0, 0, 0], "look_at": [0, 0, -1], "vfov": 30 },
+      "materials": { "mirror": { "diffuse": 0, "reflection": 1 } },
+      "objects": [
+        { "type": "plane", "point": [0, 0, -1], "normal": [0, 0, 1], "material": "mirror" },
+        { "type": "plane", "point": [0, 0, 1], "normal": [0, 0, -1], "material": "mirror" }
+      ],
+      "lights": [ { "type": "point", "position": [0, 0, 0.5], "intensity": 1 } ]
+    })");
+    scene["render"]["max_depth"] = maxDepth;
+    scene["render"]["integrator"] = integrator;
+    return scene;
+}
+
+class CliDepthLimit : public testing::TestWithParam<std::string> {};
+
+// Whitted recursion takes stack per bounce, and a path between perfect mirrors never ends by
+// Russian roulette (its throughput stays 1): at the deepest accepted depth both follow every
+// bounce and end, in the stack the program gives its render threads.
+TEST_P(CliDepthLimit, TheDeepestAcceptedDepthIsFollowedToItsEnd) {
+    const TempFolder folder;
+    folder.write("scene.json", facingMirrors(RenderSettings::kMaxDepthLimit, GetParam()).dump());
+    const RunResult run = runLancer({"scene.json", "-o", "out.pfm", "--stats"}, folder.path());
+    ASSERT_EQ(run.exitStatus, 0) << run;
+    // One camera ray and one per bounce for each of the 16 pixels; mirrors take no shadow rays.
+    const std::string rays =
+        "stats: " + std::to_string(16 * (RenderSettings::kMaxDepthLimit + 1)) + " rays";
+    EXPECT_NE(run.standardError.find(rays), std::string::npos) << run;
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, CliDepthLimit, testing::Values("whitted", "path"),
+                         [](const testing::TestParamInfo<std::string>& test) {
+                             return test.param;
+                         });
+
+}  // namespace
+}  // namespace lancer::test
