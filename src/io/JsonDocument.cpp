@@ -106,8 +106,8 @@ public:
     bool end_array() { return close(); }
     bool key(string_t& k) {
         Container& c = stack_.back();
-        c.pendingKey = k;
-        doc_.positions_[JsonDocument::child(c.pointer, k)].key = locate(openingQuote(lastRead_));
+        c.pendingKey = escapePointerToken(k);
+        doc_.positions_[childOf(c.id, c.pendingKey)].key = locate(openingQuote(lastRead_));
         return true;
     }
     bool parse_error(std::size_t position, const std::string&,
@@ -127,10 +127,10 @@ public:
 
 private:
     struct Container {
-        std::string pointer;
+        std::size_t id;  // the container's number in the document's positions
         bool isArray;
         std::size_t nextIndex = 0;
-        std::string pendingKey;
+        std::string pendingKey;  // escaped
     };
 
     // Where a syntax error is shown. `position` counts the characters the lexer consumed; the
@@ -174,22 +174,39 @@ private:
         return scalar(i);
     }
 
-    std::string nextPointer() {
-        if (stack_.empty()) return "";
+    // The number of the value named `token` in the container numbered `parent`, made if new.
+    std::size_t childOf(std::size_t parent, const std::string& token) {
+        const auto [it, added] =
+            doc_.children_.try_emplace({parent, token}, doc_.positions_.size());
+        if (added) doc_.positions_.emplace_back();
+        return it->second;
+    }
+
+    // The number of the value the parser reports next.
+    std::size_t nextValue() {
+        if (stack_.empty()) {
+            if (doc_.positions_.empty()) doc_.positions_.emplace_back();
+            return 0;
+        }
         Container& c = stack_.back();
-        return c.isArray ? JsonDocument::child(c.pointer, c.nextIndex++)
-                         : JsonDocument::child(c.pointer, c.pendingKey);
+        return childOf(c.id, c.isArray ? std::to_string(c.nextIndex++) : c.pendingKey);
     }
 
     bool scalar(std::size_t startOffset) {
-        doc_.positions_[nextPointer()].value = locate(startOffset);
+        doc_.positions_[nextValue()].value = locate(startOffset);
         return true;
     }
 
     bool open(bool isArray) {
-        const std::string pointer = nextPointer();
-        doc_.positions_[pointer].value = locate(lastRead_);
-        stack_.push_back({pointer, isArray, 0, {}});
+        if (stack_.size() >= JsonDocument::kMaxNesting) {
+            errorMessage = "arrays and objects are nested more than " +
+                           std::to_string(JsonDocument::kMaxNesting) + " deep";
+            errorOffset = lastRead_;
+            return false;
+        }
+        const std::size_t id = nextValue();
+        doc_.positions_[id].value = locate(lastRead_);
+        stack_.push_back({id, isArray, 0, {}});
         return true;
     }
 
@@ -223,15 +240,29 @@ JsonDocument JsonDocument::parse(const std::string& text, const std::string& fil
     return doc;
 }
 
+const JsonDocument::Position* JsonDocument::find(const std::string& pointer) const {
+    if (positions_.empty()) return nullptr;
+    std::size_t id = 0;
+    // Each token follows a '/'; the root's pointer is "".
+    for (std::size_t start = 0; start < pointer.size();) {
+        const std::size_t end = std::min(pointer.find('/', start + 1), pointer.size());
+        const auto it = children_.find({id, pointer.substr(start + 1, end - start - 1)});
+        if (it == children_.end()) return nullptr;
+        id = it->second;
+        start = end;
+    }
+    return &positions_[id];
+}
+
 SourceLocation JsonDocument::valueLocation(const std::string& pointer) const {
-    const auto it = positions_.find(pointer);
-    return it == positions_.end() ? SourceLocation{} : it->second.value;
+    const Position* position = find(pointer);
+    return position ? position->value : SourceLocation{};
 }
 
 SourceLocation JsonDocument::keyLocation(const std::string& pointer) const {
-    const auto it = positions_.find(pointer);
-    if (it == positions_.end()) return {};
-    return it->second.key.line > 0 ? it->second.key : it->second.value;
+    const Position* position = find(pointer);
+    if (!position) return {};
+    return position->key.line > 0 ? position->key : position->value;
 }
 
 }  // namespace lancer

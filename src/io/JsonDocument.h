@@ -1,7 +1,10 @@
 #pragma once
 
+#include <cstddef>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -14,7 +17,12 @@ namespace lancer {
 // Values are addressed by JSON pointer ("/objects/2/radius"); the root is "".
 class JsonDocument {
 public:
-    // Throws InputError naming `fileName` and the position of a syntax error.
+    // The most arrays and objects that may be open at once: a scene needs a handful, and
+    // deeper text is an attack on the parser rather than a scene.
+    static constexpr std::size_t kMaxNesting = 256;
+
+    // Throws InputError naming `fileName` and the position of a syntax error or of the container
+    // nested deeper than kMaxNesting.
     static JsonDocument parse(const std::string& text, const std::string& fileName);
 
     const nlohmann::json& root() const { return root_; }
@@ -36,9 +44,16 @@ private:
         SourceLocation value;
     };
 
+    // The value a pointer names, by walking its tokens down from the root; none if unknown.
+    const Position* find(const std::string& pointer) const;
+
     nlohmann::json root_;
     std::string fileName_;
-    std::map<std::string, Position> positions_;
+    // The positions as a tree, so that memory grows with the text and not with its nesting: each
+    // value is numbered (the root is 0) and found from its parent's number and its escaped
+    // pointer token (a key, or an array index in decimal).
+    std::vector<Position> positions_;
+    std::map<std::pair<std::size_t, std::string>, std::size_t> children_;
 
     friend class JsonPositionRecorder;
 };

@@ -163,6 +163,39 @@ TEST(JsonDocumentTest, ErrorMessagesKeepOnlyTheirOwnPosition) {
     EXPECT_EQ(message.find("line 1"), std::string::npos) << message;
 }
 
+TEST(JsonDocumentTest, NestingUpToTheLimitIsRead) {
+    const std::size_t depth = JsonDocument::kMaxNesting;
+    const JsonDocument doc =
+        JsonDocument::parse(std::string(depth, '[') + std::string(depth, ']'), "deep.json");
+    // The innermost array is element 0 of element 0 ... of the root.
+    std::string pointer;
+    for (std::size_t i = 1; i < depth; ++i)
+        pointer = JsonDocument::child(pointer, std::size_t{0});
+    EXPECT_TRUE(isAt(doc.valueLocation(pointer), 1, static_cast<int>(depth)));
+}
+
+TEST(JsonDocumentTest, NestingBeyondTheLimitIsAnErrorAtTheFirstContainerTooMany) {
+    // Unclosed: reading to the end would report the end of the text instead. Without the limit,
+    // memory for positions grew with the square of the depth (8 GB for 200 KB).
+    const std::string message = parseError(std::string(2000, '['));
+    EXPECT_TRUE(reportsAt(message, 1, static_cast<int>(JsonDocument::kMaxNesting) + 1));
+    EXPECT_NE(message.find("nested more than 256 deep"), std::string::npos) << message;
+}
+
+TEST(JsonDocumentTest, PositionsOfManyValuesDeepDown) {
+    // Siblings deep in the tree each find their own place.
+    std::string text(100, '[');
+    text += "1, 2, 3";
+    text += std::string(100, ']');
+    const JsonDocument doc = JsonDocument::parse(text, "wide.json");
+    std::string pointer;
+    for (int i = 1; i < 100; ++i)
+        pointer = JsonDocument::child(pointer, std::size_t{0});
+    EXPECT_TRUE(isAt(doc.valueLocation(JsonDocument::child(pointer, std::size_t{0})), 1, 101));
+    EXPECT_TRUE(isAt(doc.valueLocation(JsonDocument::child(pointer, std::size_t{2})), 1, 107));
+    EXPECT_TRUE(isAt(doc.valueLocation(JsonDocument::child(pointer, std::size_t{3})), 0, 0));
+}
+
 TEST(JsonDocumentTest, EmptyTextIsAnError) {
     EXPECT_TRUE(reportsAt(parseError(""), 1, 1));
 }
