@@ -240,6 +240,9 @@ int run(const Options& options) {
         return fail(kExitFailure, "lancer: error: " + output.string() +
                                       ": cannot write the image (folder " + outputFolder.string() +
                                       " does not exist)");
+    if (fs::is_directory(output))
+        return fail(kExitFailure, "lancer: error: " + output.string() +
+                                      ": cannot write the image (it is a folder)");
 
     std::vector<std::string> warnings;
     Scene scene = SceneLoader::loadFile(options.scene, warnings);

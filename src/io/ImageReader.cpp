@@ -2,6 +2,7 @@
 
 #include <FreeImage.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -144,12 +145,44 @@ bool tgaIsSafeToDecode(std::FILE* file) {
     return stamp + 2 + stampBytes <= footer;
 }
 
+// FreeImage's BMP decoder reads the rows of an uncompressed file past its end as zeros, and
+// succeeds: a truncated file would render as a picture with black rows. Checks that the rows the
+// header declares (each padded to 4 bytes) fit between the pixel data's offset and the end.
+bool bmpPixelsFitInFile(std::FILE* file) {
+    const long size = fileSize(file);
+    const std::uint32_t headerSize = readLittleEndian(file, 14, 4);
+    std::int64_t width = 0, height = 0;
+    std::uint32_t bitsPerPixel = 0, compression = 0;
+    if (headerSize == 12) {  // OS/2 1.x: 16-bit sizes, never compressed
+        width = readLittleEndian(file, 18, 2);
+        height = readLittleEndian(file, 20, 2);
+        bitsPerPixel = readLittleEndian(file, 24, 2);
+    } else if (headerSize >= 40) {
+        width = static_cast<std::int32_t>(readLittleEndian(file, 18, 4));
+        height = static_cast<std::int32_t>(readLittleEndian(file, 22, 4));  // < 0: top-down
+        bitsPerPixel = readLittleEndian(file, 28, 2);
+        compression = readLittleEndian(file, 30, 4);
+    }
+    constexpr std::uint32_t kUncompressed = 0, kBitFields = 3;
+    // Other headers, sizes and compressions FreeImage refuses or decodes with its own checks.
+    if (width <= 0 || height == 0 || bitsPerPixel == 0 ||
+        (compression != kUncompressed && compression != kBitFields))
+        return true;
+    const std::int64_t rowBytes = (width * bitsPerPixel + 31) / 32 * 4;
+    const std::int64_t pixelData =
+        std::max<std::int64_t>(readLittleEndian(file, 10, 4), 14 + std::int64_t{headerSize});
+    const std::int64_t room = size - pixelData;
+    return room >= 0 && (height < 0 ? -height : height) <= room / rowBytes;
+}
+
 // Why FreeImage must not see the file, or "" when it may.
 std::string damageFreeImageMisses(std::FILE* file, FREE_IMAGE_FORMAT format) {
     if (format == FIF_EXR && !exrHeadersFitInFile(file))
         return "a header attribute runs past the end of the file";
     if (format == FIF_TARGA && !tgaIsSafeToDecode(file))
         return "its pixel data or thumbnail is cut short";
+    if (format == FIF_BMP && !bmpPixelsFitInFile(file))
+        return "its pixel data ends before the rows its header declares";
     return "";
 }
 

@@ -111,7 +111,9 @@ void ImageWriter::write(const Image& film, const std::filesystem::path& path) {
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
     if (error) {
-        std::filesystem::remove(temporary, error);
+        // Not into `error`, whose reason the message gives.
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
         throw std::runtime_error(path.string() + ": cannot write the image (" + error.message() +
                                  ")");
     }

@@ -112,12 +112,7 @@ public:
     }
     bool parse_error(std::size_t position, const std::string&,
                      const nlohmann::detail::exception& e) {
-        // nlohmann's message reads "[json.exception.parse_error.101] parse error at line L,
-        // column C: what"; keep only "what", the position is given in our own format.
-        std::string message = e.what();
-        const std::size_t colon = message.find(": ", message.find("column"));
-        if (colon != std::string::npos) message = message.substr(colon + 2);
-        errorMessage = message;
+        errorMessage = withoutNlohmannPrefix(e.what());
         errorOffset = errorPlace(position);
         return false;
     }
@@ -132,6 +127,21 @@ private:
         std::size_t nextIndex = 0;
         std::string pendingKey;  // escaped
     };
+
+    // nlohmann's messages read "[json.exception.parse_error.101] parse error at line L, column C:
+    // what" or "[json.exception.out_of_range.406] what": keep only "what", the position is given
+    // in our own format.
+    static std::string withoutNlohmannPrefix(std::string message) {
+        const std::size_t column = message.find("column");
+        if (column != std::string::npos) {
+            const std::size_t colon = message.find(": ", column);
+            if (colon != std::string::npos) return message.substr(colon + 2);
+        }
+        const std::size_t bracket = message.find("] ");
+        if (message.rfind("[json.exception.", 0) == 0 && bracket != std::string::npos)
+            return message.substr(bracket + 2);
+        return message;
+    }
 
     // Where a syntax error is shown. `position` counts the characters the lexer consumed; the
     // last of them ends either a token the parser did not expect, shown from its first

@@ -349,6 +349,19 @@ TEST_F(ImageReaderTest, TruncatedPngIsAnError) {
     EXPECT_NE(message.find("corrupt or truncated PNG"), std::string::npos) << message;
 }
 
+TEST_F(ImageReaderTest, TruncatedBmpIsAnError) {
+    // FreeImage reads the missing rows as black and succeeds.
+    const path whole = folder / "whole.bmp";
+    test::save(test::makeBitmap8(32, 32, gradientCode), whole, FIF_BMP);
+    const std::string bytes = test::readBytes(whole);
+    const path truncated = folder / "truncated.bmp";
+    test::writeBytes(truncated, bytes.substr(0, bytes.size() - 1));
+    const std::string message = expectInputError(truncated);
+    EXPECT_NE(message.find("corrupt or truncated BMP file: its pixel data ends before the rows"),
+              std::string::npos)
+        << message;
+}
+
 // Damage that FreeImage's decoders do not survive, caught before they see it.
 
 TEST_F(ImageReaderTest, ExrHeaderCutShortIsAnError) {

@@ -163,6 +163,11 @@ TEST(JsonDocumentTest, ErrorMessagesKeepOnlyTheirOwnPosition) {
     EXPECT_EQ(message.find("line 1"), std::string::npos) << message;
 }
 
+TEST(JsonDocumentTest, NumbersOutOfRangeAreReportedWithoutNlohmannsPrefix) {
+    // nlohmann's "[json.exception.out_of_range.406] number overflow parsing '1e999'".
+    EXPECT_EQ(parseError("[1e999]"), "bad.json:1:2: error: number overflow parsing '1e999'");
+}
+
 TEST(JsonDocumentTest, NestingUpToTheLimitIsRead) {
     const std::size_t depth = JsonDocument::kMaxNesting;
     const JsonDocument doc =
