@@ -5,8 +5,6 @@
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
-#include <atomic>
-#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <initializer_list>
@@ -18,6 +16,7 @@
 #include <vector>
 
 #include "BuildInfo.h"
+#include "InterruptSignals.h"
 #include "LiveRender.h"
 #include "LiveSolve.h"
 #include "ProgressBar.h"
@@ -40,15 +39,6 @@ namespace {
 
 constexpr int kExitFailure = 1;
 constexpr int kExitBadInput = 2;
-constexpr int kExitInterrupted = 130;
-
-std::atomic<bool> interruptRequested{false};
-
-extern "C" void onInterrupt(int) {
-    interruptRequested = true;
-    // A second Ctrl-C kills at once, for a user who does not want to wait for the save.
-    std::signal(SIGINT, SIG_DFL);
-}
 
 struct Options {
     std::string scene;
@@ -167,10 +157,11 @@ std::string describeRate(std::uint64_t rays, double seconds) {
 // The solve, its progress on the terminal's bar (if stderr is one and not --quiet).
 std::optional<RadiositySolution> solveOnTheTerminal(RadiositySolver& solver,
                                                     const Options& options) {
-    if (options.quiet || !isatty(STDERR_FILENO)) return solver.solve({}, &interruptRequested);
+    if (options.quiet || !isatty(STDERR_FILENO))
+        return solver.solve({}, &InterruptSignals::requested());
     ProgressBar progress(true);
     std::optional<RadiositySolution> solution =
-        TerminalSolve(solver, progress).run(interruptRequested);
+        TerminalSolve(solver, progress).run(InterruptSignals::requested());
     progress.finish();
     return solution;
 }
@@ -189,12 +180,17 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
                              "materials, lights or \"radiosity\" settings differ)");
     } else {
         std::optional<RadiositySolution> solved =
-            viewer ? LiveSolve(*viewer, scene, solver, options.threads).run(interruptRequested)
+            viewer ? LiveSolve(*viewer, scene, solver, options.threads)
+                         .run(InterruptSignals::requested())
                    : solveOnTheTerminal(solver, options);
         if (!solved) return std::nullopt;
         solution = std::move(*solved);
     }
-    if (options.saveRadiosity) solution.save(*options.saveRadiosity);
+    if (options.saveRadiosity) {
+        InterruptSignals::setPhase(InterruptSignals::Phase::Saving);
+        solution.save(*options.saveRadiosity);
+        InterruptSignals::setPhase(InterruptSignals::Phase::Working);
+    }
     if (!options.quiet) {
         const RadiosityStatistics& s = solution.statistics();
         std::fprintf(
@@ -211,6 +207,8 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
 }
 
 int run(const Options& options) {
+    // Before anything is read: a signal while the scene loads ends the program cleanly.
+    InterruptSignals::install();
     // The mesh builds, the radiosity solve and the render all run on oneTBB's threads: no more
     // of them at once than --threads allows (and as many, when it asks for more than the cores).
     std::optional<tbb::global_control> threadLimit;
@@ -278,8 +276,8 @@ int run(const Options& options) {
             std::cerr << "lancer: warning: --window: " << error << "; rendering without it\n";
     }
 
-    // From here on Ctrl-C stops the radiosity solve, then the render.
-    std::signal(SIGINT, onInterrupt);
+    // From here on a signal stops the radiosity solve, then the render.
+    InterruptSignals::setPhase(InterruptSignals::Phase::Working);
     std::unique_ptr<Integrator> integrator;
     try {
         IntegratorSetup setup;
@@ -291,19 +289,20 @@ int run(const Options& options) {
         return usageError(e.what());
     }
     if (!integrator) {
-        std::signal(SIGINT, SIG_DFL);
         // Nothing was rendered: no image is written (nor any solution), and no file is left.
         std::cerr << "lancer: interrupted during the radiosity solve; nothing was written\n";
-        return kExitInterrupted;
+        return InterruptSignals::exitStatus();
     }
 
     // Writes the image as soon as its render ends; returns the exit status.
     const auto deliver = [&](const RenderResult& result) {
+        InterruptSignals::setPhase(InterruptSignals::Phase::Saving);
         ImageWriter::write(result.film, output);
+        InterruptSignals::setPhase(InterruptSignals::Phase::Working);
         if (result.interrupted) {
             std::cerr << "lancer: interrupted; the part rendered so far was written to "
                       << output.string() << '\n';
-            return kExitInterrupted;
+            return InterruptSignals::exitStatus();
         }
         if (options.stats) printStatistics(scene, result.counters);
         if (!options.quiet)
@@ -315,21 +314,17 @@ int run(const Options& options) {
         return 0;
     };
 
-    renderOptions.cancel = &interruptRequested;
+    renderOptions.cancel = &InterruptSignals::requested();
     if (viewer) {
         // The window stays open after the render, until closed; Ctrl-C closes it too.
-        const int status =
-            LiveRender(*viewer, scene, *integrator, renderOptions, output, options.quiet)
-                .run(deliver);
-        std::signal(SIGINT, SIG_DFL);
-        return status;
+        return LiveRender(*viewer, scene, *integrator, renderOptions, output, options.quiet)
+            .run(deliver);
     }
     ProgressBar progress(!options.quiet && isatty(STDERR_FILENO));
     renderOptions.onTileDone = [&](const FinishedTile& tile) {
         progress.update(tile.tilesDone, tile.tilesTotal);
     };
     const RenderResult result = Renderer(scene, *integrator).render(renderOptions);
-    std::signal(SIGINT, SIG_DFL);
     progress.finish();
     return deliver(result);
 }

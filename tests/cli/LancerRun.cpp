@@ -83,33 +83,40 @@ LancerProcess::LancerProcess(const std::vector<std::string>& arguments,
 }
 
 LancerProcess::~LancerProcess() {
-    if (pid_ > 0) {
+    if (pid_ > 0 && !ended_) {
         kill(pid_, SIGKILL);
         waitpid(pid_, nullptr, 0);
     }
 }
 
 void LancerProcess::sendSignal(int signal) const {
-    if (pid_ > 0) kill(pid_, signal);
+    // Until reaped (which sets ended_), an ended process keeps its number.
+    if (pid_ > 0 && !ended_) kill(pid_, signal);
+}
+
+bool LancerProcess::hasEnded() {
+    if (ended_ || pid_ <= 0) return ended_;
+    const pid_t done = waitpid(pid_, &status_, WNOHANG);
+    if (done < 0) throw std::runtime_error("waitpid failed");
+    ended_ = done == pid_;
+    return ended_;
 }
 
 RunResult LancerProcess::wait(std::chrono::milliseconds timeout) {
     RunResult result;
     const auto deadline = std::chrono::steady_clock::now() + timeout;
-    int status = 0;
-    for (;;) {
-        const pid_t done = waitpid(pid_, &status, WNOHANG);
-        if (done == pid_) break;
-        if (done < 0) throw std::runtime_error("waitpid failed");
+    while (!hasEnded()) {
         if (std::chrono::steady_clock::now() > deadline) {
             kill(pid_, SIGKILL);
-            waitpid(pid_, &status, 0);
+            waitpid(pid_, &status_, 0);
+            ended_ = true;
             result.timedOut = true;
             break;
         }
         std::this_thread::sleep_for(std::chrono::milliseconds(2));
     }
     pid_ = -1;
+    const int status = status_;
     if (WIFEXITED(status)) result.exitStatus = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) result.terminatingSignal = WTERMSIG(status);
     result.standardOutput = readFile(captureFolder_ / "stdout");

@@ -51,13 +51,18 @@ public:
     LancerProcess(const LancerProcess&) = delete;
     LancerProcess& operator=(const LancerProcess&) = delete;
 
+    // Sends `signal` unless the process has ended.
     void sendSignal(int signal) const;
+    // Whether the process has ended (then wait() returns at once), without waiting.
+    bool hasEnded();
     // Waits for the process to end; after `timeout` it is killed and the result says timedOut.
     RunResult wait(std::chrono::milliseconds timeout = kRunTimeout);
 
 private:
     TempFolder captureFolder_;  // its standard output and error, kept out of the working folder
     int pid_ = -1;
+    bool ended_ = false;
+    int status_ = 0;  // waitpid's, once ended
 };
 #endif
 
