@@ -5,6 +5,7 @@
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <csignal>
 #include <cstdio>
 #include <filesystem>
 #include <initializer_list>
@@ -209,6 +210,9 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
 int run(const Options& options) {
     // Before anything is read: a signal while the scene loads ends the program cleanly.
     InterruptSignals::install();
+    // Beyond the file-size limit (ulimit -f) a write fails with EFBIG, reported as a failed
+    // write; the default action would kill lancer and leave its temporary file.
+    std::signal(SIGXFSZ, SIG_IGN);
     // The mesh builds, the radiosity solve and the render all run on oneTBB's threads: no more
     // of them at once than --threads allows (and as many, when it asks for more than the cores).
     std::optional<tbb::global_control> threadLimit;

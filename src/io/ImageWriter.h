@@ -8,9 +8,10 @@
 namespace lancer {
 
 // Saves a film through FreeImage, in the format the file extension names: .png .jpg .bmp .tga
-// .tif as 8-bit sRGB (clamped), .exr .hdr .pfm as linear 32-bit float. The image goes to a
-// temporary file in the same folder, renamed into place once complete, so that a failure never
-// leaves a damaged file behind.
+// .tif as 8-bit sRGB (clamped), .exr .hdr .pfm as linear 32-bit float. The image is encoded in
+// memory, its bytes written to a temporary file in the same folder with every system call checked
+// and flushed to the disk, then renamed into place, so that a failure (a full disk) never leaves a
+// damaged file behind.
 class ImageWriter {
 public:
     // Whether the path's extension (case-insensitive) is one of the formats above.

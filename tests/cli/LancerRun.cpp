@@ -14,6 +14,7 @@
 
 #ifndef _WIN32
 #include <fcntl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -54,7 +55,7 @@ std::ostream& operator<<(std::ostream& out, const RunResult& run) {
 #ifndef _WIN32
 
 LancerProcess::LancerProcess(const std::vector<std::string>& arguments,
-                             const fs::path& workingFolder) {
+                             const fs::path& workingFolder, std::size_t fileSizeLimit) {
     // Everything the child needs is prepared before fork(): after it, only async-signal-safe
     // calls are allowed.
     std::vector<std::string> argv{LANCER_EXE};
@@ -77,6 +78,8 @@ LancerProcess::LancerProcess(const std::vector<std::string>& arguments,
             _exit(127);
         // Whatever the test runner does with Ctrl-C, lancer starts with the default action.
         signal(SIGINT, SIG_DFL);
+        const rlimit fileSize{fileSizeLimit, fileSizeLimit};
+        if (fileSizeLimit > 0 && setrlimit(RLIMIT_FSIZE, &fileSize) != 0) _exit(127);
         execv(cArgv[0], cArgv.data());
         _exit(127);
     }

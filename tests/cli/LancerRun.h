@@ -46,7 +46,10 @@ RunResult runLancer(const std::vector<std::string>& arguments, const fs::path& w
 // A lancer process running in the background, for tests that signal it while it works.
 class LancerProcess {
 public:
-    LancerProcess(const std::vector<std::string>& arguments, const fs::path& workingFolder);
+    // `fileSizeLimit` (bytes, 0 for none) bounds the files lancer may write (RLIMIT_FSIZE): a
+    // write past it fails as on a full disk.
+    LancerProcess(const std::vector<std::string>& arguments, const fs::path& workingFolder,
+                  std::size_t fileSizeLimit = 0);
     ~LancerProcess();  // kills the process if it is still running
     LancerProcess(const LancerProcess&) = delete;
     LancerProcess& operator=(const LancerProcess&) = delete;
