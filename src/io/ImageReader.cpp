@@ -215,6 +215,16 @@ Color floatTexel(FREE_IMAGE_TYPE type, const BYTE* scanline, int x) {
     }
 }
 
+// Why an image of this size is not read, or "" when it is.
+std::string sizeBeyondLimits(unsigned width, unsigned height) {
+    if (width <= ImageReader::kMaxSide && height <= ImageReader::kMaxSide &&
+        static_cast<unsigned long long>(width) * height <= ImageReader::kMaxPixels)
+        return "";
+    return "it is " + std::to_string(width) + " x " + std::to_string(height) + " pixels; at most " +
+           std::to_string(ImageReader::kMaxSide) + " a side and " +
+           std::to_string(ImageReader::kMaxPixels) + " in all are read";
+}
+
 bool isFloat(FREE_IMAGE_TYPE type) {
     return type == FIT_FLOAT || type == FIT_RGBF || type == FIT_RGBAF;
 }
@@ -245,6 +255,24 @@ Image ImageReader::read(const std::filesystem::path& path) {
     std::rewind(file.get());
 
     startCapturingFreeImageMessages();
+    const auto checkSize = [&](FIBITMAP* image) {
+        const std::string beyond =
+            sizeBeyondLimits(FreeImage_GetWidth(image), FreeImage_GetHeight(image));
+        if (!beyond.empty()) throw InputError(name, "cannot read the image (" + beyond + ")");
+    };
+    if (FreeImage_FIFSupportsNoPixels(format)) {
+        // The header alone first: its size decides whether the pixels are decoded at all.
+        FreeImageBitmap header;
+        try {
+            header.reset(FreeImage_LoadFromHandle(format, &fileIO, file.get(),
+                                                  loadFlags(format) | FIF_LOAD_NOPIXELS));
+        } catch (const std::exception& e) {
+            throw corrupt(e.what());
+        }
+        if (!header) throw corrupt(lastFreeImageMessage());
+        checkSize(header.get());
+        std::rewind(file.get());
+    }
     FreeImageBitmap bitmap;
     try {
         bitmap.reset(FreeImage_LoadFromHandle(format, &fileIO, file.get(), loadFlags(format)));
@@ -255,6 +283,7 @@ Image ImageReader::read(const std::filesystem::path& path) {
     }
     if (!bitmap || FreeImage_GetWidth(bitmap.get()) == 0 || FreeImage_GetHeight(bitmap.get()) == 0)
         throw corrupt(lastFreeImageMessage());
+    checkSize(bitmap.get());  // for the formats without a header-only read
 
     // Float images are read as they are. Integer ones become float RGB scaled to [0, 1], still
     // sRGB-encoded; bitmaps other than 24-bit pass through 24 bits first (expanding palettes and

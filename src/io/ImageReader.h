@@ -16,8 +16,16 @@ namespace lancer {
 // Alpha is ignored.
 class ImageReader {
 public:
-    // Throws InputError naming the file when it is missing, unreadable, corrupt or holds pixels
-    // that are not colour (complex or 32-bit integer data, for example).
+    // The largest image read: beyond it a damaged or hostile header would have FreeImage allocate
+    // gigabytes. The size a file declares is checked before its pixels are decoded (for the few
+    // formats FreeImage cannot read the header of alone, GIF, JPEG 2000, DDS, SGI and some rarer
+    // ones, after).
+    static constexpr unsigned kMaxSide = 32768;
+    static constexpr unsigned long long kMaxPixels = 1ull << 28;
+
+    // Throws InputError naming the file when it is missing, unreadable, corrupt, larger than the
+    // limits above or holds pixels that are not colour (complex or 32-bit integer data, for
+    // example).
     static Image read(const std::filesystem::path& path);
     // The image of the file as a texture: read, then its mip-map pyramid built.
     static std::shared_ptr<const ImageTexture> readTexture(const std::filesystem::path& path);

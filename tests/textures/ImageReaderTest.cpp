@@ -362,6 +362,62 @@ TEST_F(ImageReaderTest, TruncatedBmpIsAnError) {
         << message;
 }
 
+// An uncompressed TGA header (true colour, 24 bits, bottom-up) declaring `width` x `height`
+// pixels, followed by `dataBytes` bytes of pixels.
+std::string tgaHeader(unsigned width, unsigned height, std::size_t dataBytes) {
+    std::string bytes(18, '\0');
+    bytes[2] = 2;  // uncompressed true colour
+    bytes[12] = static_cast<char>(width & 0xff);
+    bytes[13] = static_cast<char>(width >> 8);
+    bytes[14] = static_cast<char>(height & 0xff);
+    bytes[15] = static_cast<char>(height >> 8);
+    bytes[16] = 24;
+    return bytes + std::string(dataBytes, '\x40');
+}
+
+// The sizes headers declare are checked before any pixel is decoded: these files are small, and
+// their pixels would take gigabytes (or, for the first, be read as zeros and rendered).
+TEST_F(ImageReaderTest, ImageWiderThanTheLimitIsRefusedBeforeDecoding) {
+    const path file = folder / "wide.tga";
+    test::writeBytes(file, tgaHeader(ImageReader::kMaxSide + 1, 1, 300));
+    const std::string message = expectInputError(file);
+    EXPECT_NE(message.find("it is 32769 x 1 pixels; at most 32768 a side"), std::string::npos)
+        << message;
+}
+
+TEST_F(ImageReaderTest, PfmTallerThanTheLimitIsRefusedBeforeDecoding) {
+    const path file = folder / "tall.pfm";
+    test::writeBytes(file, "PF\n1 40000\n-1\n" + std::string(120, '\0'));
+    const std::string message = expectInputError(file);
+    EXPECT_NE(message.find("it is 1 x 40000 pixels"), std::string::npos) << message;
+}
+
+TEST_F(ImageReaderTest, ImageOfMorePixelsThanTheLimitIsRefusedBeforeDecoding) {
+    // 20000 x 20000: each side within the limit, 4e8 pixels in all (4.8 GB as float RGB).
+    const path file = folder / "large.tga";
+    test::writeBytes(file, tgaHeader(20000, 20000, 300));
+    const std::string message = expectInputError(file);
+    EXPECT_NE(message.find("it is 20000 x 20000 pixels"), std::string::npos) << message;
+    EXPECT_NE(message.find("268435456 in all"), std::string::npos) << message;
+}
+
+TEST_F(ImageReaderTest, TinyBmpDeclaringMillionsOfPixelsIsRefusedBeforeDecoding) {
+    // The 233 bytes declaring 67 million x 6 pixels: FreeImage allocated 9.45 GB.
+    const auto le32 = [](std::uint32_t v) {
+        std::string b(4, '\0');
+        for (int i = 0; i < 4; ++i)
+            b[static_cast<std::size_t>(i)] = static_cast<char>(v >> (8 * i) & 0xff);
+        return b;
+    };
+    std::string bytes = "BM" + le32(233) + le32(0) + le32(54) + le32(40) + le32(67'108'864) +
+                        le32(6) + std::string("\x01\x00\x18\x00", 4) + le32(0) + le32(0) + le32(0) +
+                        le32(0) + le32(0) + le32(0);
+    bytes += std::string(233 - bytes.size(), '\x40');
+    const path file = folder / "tiny.bmp";
+    test::writeBytes(file, bytes);
+    expectInputError(file);
+}
+
 // Damage that FreeImage's decoders do not survive, caught before they see it.
 
 TEST_F(ImageReaderTest, ExrHeaderCutShortIsAnError) {
