@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <csignal>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <initializer_list>
@@ -115,6 +116,32 @@ std::string unexpectedArguments(const CLI::App& app, int argc, char** argv,
                quotedNames(valid);
     }
     return std::string(error.what()) + " (see lancer --help)";
+}
+
+// The memory the image's buffers take, in bytes: the render's film and what the writer needs;
+// with the window, also its preview film, its own copy and the 8-bit pixels it shows (ours and
+// SDL's).
+std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output, bool window) {
+    const std::uint64_t pixels =
+        static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
+    std::uint64_t bytes =
+        pixels * sizeof(Color) + ImageWriter::memoryNeeded(output, settings.width, settings.height);
+    if (window) bytes += pixels * (2 * sizeof(Color) + 2 * 3);
+    return bytes;
+}
+
+// The machine's memory in bytes, or 0 when unknown.
+std::uint64_t physicalMemory() {
+    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && pageSize > 0
+               ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(pageSize)
+               : 0;
+}
+
+std::string gigabytes(std::uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+    return text;
 }
 
 void printStatistics(const Scene& scene, const RenderCounters& counters) {
@@ -258,6 +285,14 @@ int run(const Options& options) {
     if (options.spp) settings.samplesPerPixel = *options.spp;
     if (options.maxDepth) settings.maxDepth = *options.maxDepth;
     if (options.integrator) settings.integrator = *options.integrator;
+    // The image's buffers are allocated before the render starts, and all at once: refuse an
+    // image that cannot fit before the first of them (or the radiosity solve) takes its time.
+    const std::uint64_t needed = imageMemory(settings, output, options.window);
+    if (const std::uint64_t memory = physicalMemory(); memory > 0 && needed > memory)
+        return usageError("a " + std::to_string(settings.width) + " x " +
+                          std::to_string(settings.height) + " image needs about " +
+                          gigabytes(needed) + " of memory for its buffers, more than the " +
+                          gigabytes(memory) + " this machine has");
 
     RenderOptions renderOptions;
     renderOptions.threads = options.threads;
@@ -356,9 +391,9 @@ int main(int argc, char** argv) {
         "Output image; the extension picks the format: .png .jpg .bmp .tga .tif (8-bit sRGB), "
         ".exr .hdr .pfm (linear float). Default: the scene's name with .png");
     app.add_option("--width", options.width, "Image width in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 1 << 16));
+        ->check(CLI::Range(1, RenderSettings::kMaxImageSide));
     app.add_option("--height", options.height, "Image height in pixels (overrides the scene)")
-        ->check(CLI::Range(1, 1 << 16));
+        ->check(CLI::Range(1, RenderSettings::kMaxImageSide));
     app.add_option("--spp", options.spp, "Samples per pixel (overrides the scene)")
         ->check(CLI::Range(1, 1 << 20));
     app.add_option("--max-depth", options.maxDepth, "Recursion depth (overrides the scene)")

@@ -123,6 +123,13 @@ std::string ImageWriter::supportedExtensions() {
     return list;
 }
 
+std::uint64_t ImageWriter::memoryNeeded(const std::filesystem::path& path, int width, int height) {
+    const Format* format = findFormat(path);
+    const std::uint64_t bytesPerPixel = format && format->linear ? sizeof(FIRGBF) : 3;
+    return 2 * bytesPerPixel * static_cast<std::uint64_t>(width) *
+           static_cast<std::uint64_t>(height);
+}
+
 void ImageWriter::write(const Image& film, const std::filesystem::path& path) {
     const Format* format = findFormat(path);
     if (!format) throw std::runtime_error(path.string() + ": unsupported image format");

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -21,6 +22,9 @@ public:
 
     // Throws std::runtime_error naming the file when it cannot be written.
     static void write(const Image& film, const std::filesystem::path& path);
+    // About the most memory write() takes for an image of this size in the path's format: the
+    // bitmap and the encoded file (at most about as large), in bytes.
+    static std::uint64_t memoryNeeded(const std::filesystem::path& path, int width, int height);
 };
 
 }  // namespace lancer

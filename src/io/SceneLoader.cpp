@@ -353,8 +353,10 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     checkKeys(node, "\"render\"",
               {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive"});
     RenderSettings& settings = scene_.settings();
-    if (node.has("width")) settings.width = readInt(node["width"], 1);
-    if (node.has("height")) settings.height = readInt(node["height"], 1);
+    if (node.has("width"))
+        settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
+    if (node.has("height"))
+        settings.height = readInt(node["height"], 1, RenderSettings::kMaxImageSide);
     if (node.has("spp")) settings.samplesPerPixel = readInt(node["spp"], 1);
     if (node.has("max_depth"))
         settings.maxDepth = readInt(node["max_depth"], 0, RenderSettings::kMaxDepthLimit);

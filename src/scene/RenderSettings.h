@@ -14,6 +14,9 @@ struct RenderSettings {
     // The deepest recursion the scene file and --max-depth accept: Whitted recursion takes
     // stack per bounce, and this depth stays well inside the 8 MiB the render threads have.
     static constexpr int kMaxDepthLimit = 1024;
+    // The widest and tallest image the scene file and --width, --height accept (a 32768 x 32768
+    // film takes 12 GiB); the memory the image's buffers need is checked as well.
+    static constexpr int kMaxImageSide = 32768;
 
     int width = 640;
     int height = 480;

@@ -3,6 +3,9 @@
 // work (ErrorTest checks the messages of the refused ones).
 
 #include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdint>
 
 #include "LancerRun.h"
 #include "scene/RenderSettings.h"
@@ -44,6 +47,31 @@ TEST_P(CliDepthLimit, TheDeepestAcceptedDepthIsFollowedToItsEnd) {
     const std::string rays =
         "stats: " + std::to_string(16 * (RenderSettings::kMaxDepthLimit + 1)) + " rays";
     EXPECT_NE(run.standardError.find(rays), std::string::npos) << run;
+}
+
+// The largest image accepted, with a float output: its buffers (the 12-byte film, the writer's
+// bitmap and file of as much) take about 38.7 GB, more than the machines this suite runs on. It
+// is refused with one line before anything is allocated; rendering would take hours.
+TEST(CliImageLimit, AnImageLargerThanTheMemoryIsRefusedBeforeAnyWork) {
+    constexpr int kSide = RenderSettings::kMaxImageSide;
+    const std::uint64_t needed = 36ull * kSide * kSide;
+    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    if (static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(pageSize) >= needed)
+        GTEST_SKIP() << "this machine has the memory for the largest image";
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const RunResult run = runLancer({"scene.json", "-o", "out.pfm", "--width",
+                                     std::to_string(kSide), "--height", std::to_string(kSide)},
+                                    folder.path(), std::chrono::seconds(10));
+    EXPECT_EQ(run.exitStatus, 2) << run;
+    const std::vector<std::string> lines = run.errorLines();
+    ASSERT_EQ(lines.size(), 1u) << run;
+    EXPECT_EQ(lines[0].rfind("lancer: error: a 32768 x 32768 image needs about 38.7 GB of memory "
+                             "for its buffers, more than the ",
+                             0),
+              0u)
+        << lines[0];
+    EXPECT_EQ(folder.entries(), std::vector<std::string>{"scene.json"});
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, CliDepthLimit, testing::Values("whitted", "path"),
