@@ -118,18 +118,25 @@ bool exrHeadersFitInFile(std::FILE* file) {
 // that is less than a pixel it reads out of bounds, and when it is zero it frees the bitmap and
 // still returns it. A TGA 2.0 postage stamp (thumbnail) claiming more pixels than its space holds
 // is copied from beyond its buffer. Both mean a damaged file: run-length packets never cross rows,
-// so each row takes at least one packet, a header byte and a pixel.
+// so each row takes at least one packet, a header byte and a pixel. An uncompressed file must hold
+// all its pixels.
 bool tgaIsSafeToDecode(std::FILE* file) {
     const long size = fileSize(file);
     const auto byteAt = [file](long offset) { return readLittleEndian(file, offset, 1); };
     const auto wordAt = [file](long offset) { return readLittleEndian(file, offset, 2); };
     const std::uint32_t depth = byteAt(16);
     const std::uint32_t imageType = byteAt(2);
+    const std::uint32_t colourMap = byteAt(1) != 0 ? wordAt(5) * ((byteAt(7) + 7) / 8) : 0;
+    const long pixelData = 18 + static_cast<long>(byteAt(0) + colourMap);
     if (imageType >= 9 && imageType <= 11) {
-        const std::uint32_t colourMap = byteAt(1) != 0 ? wordAt(5) * ((byteAt(7) + 7) / 8) : 0;
-        const long pixelData = 18 + static_cast<long>(byteAt(0) + colourMap);
         const long smallestRuns = static_cast<long>((1 + (depth + 7) / 8) * wordAt(14));
         if (size - pixelData < smallestRuns) return false;
+    }
+    // Uncompressed: the decoder reads missing pixels as zeros and succeeds, a black part.
+    if (imageType >= 1 && imageType <= 3) {
+        const long pixelBytes = static_cast<long>(wordAt(12)) * static_cast<long>(wordAt(14)) *
+                                static_cast<long>((depth + 7) / 8);
+        if (size - pixelData < pixelBytes) return false;
     }
     // The TGA 2.0 footer: extension area offset, developer area offset, signature.
     const long footer = size - 26;

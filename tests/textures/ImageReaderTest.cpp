@@ -362,11 +362,11 @@ TEST_F(ImageReaderTest, TruncatedBmpIsAnError) {
         << message;
 }
 
-// An uncompressed TGA header (true colour, 24 bits, bottom-up) declaring `width` x `height`
-// pixels, followed by `dataBytes` bytes of pixels.
+// A run-length TGA header (true colour, 24 bits, bottom-up) declaring `width` x `height` pixels,
+// followed by `dataBytes` bytes of runs (at least the 4 bytes a row that tgaIsSafeToDecode asks).
 std::string tgaHeader(unsigned width, unsigned height, std::size_t dataBytes) {
     std::string bytes(18, '\0');
-    bytes[2] = 2;  // uncompressed true colour
+    bytes[2] = 10;  // run-length true colour
     bytes[12] = static_cast<char>(width & 0xff);
     bytes[13] = static_cast<char>(width >> 8);
     bytes[14] = static_cast<char>(height & 0xff);
@@ -395,7 +395,7 @@ TEST_F(ImageReaderTest, PfmTallerThanTheLimitIsRefusedBeforeDecoding) {
 TEST_F(ImageReaderTest, ImageOfMorePixelsThanTheLimitIsRefusedBeforeDecoding) {
     // 20000 x 20000: each side within the limit, 4e8 pixels in all (4.8 GB as float RGB).
     const path file = folder / "large.tga";
-    test::writeBytes(file, tgaHeader(20000, 20000, 300));
+    test::writeBytes(file, tgaHeader(20000, 20000, 4 * 20000));
     const std::string message = expectInputError(file);
     EXPECT_NE(message.find("it is 20000 x 20000 pixels"), std::string::npos) << message;
     EXPECT_NE(message.find("268435456 in all"), std::string::npos) << message;
@@ -453,6 +453,17 @@ TEST_F(ImageReaderTest, TgaRunLengthDataCutShortIsAnError) {
     const path damaged = folder / "damaged.tga";
     test::writeBytes(damaged, bytes);
     expectInputError(damaged);
+}
+
+TEST_F(ImageReaderTest, UncompressedTgaCutShortIsAnError) {
+    // FreeImage read the missing pixels as black and succeeded.
+    const path whole = folder / "whole.tga";
+    test::save(test::makeBitmap8(8, 8, gradientCode), whole, FIF_TARGA, TARGA_DEFAULT);
+    const std::string bytes = test::readBytes(whole);
+    const path cut = folder / "cut.tga";
+    test::writeBytes(cut, bytes.substr(0, 18 + 8 * 8 * 3 - 1));
+    const std::string message = expectInputError(cut);
+    EXPECT_NE(message.find("corrupt or truncated TARGA file"), std::string::npos) << message;
 }
 
 TEST_F(ImageReaderTest, TgaPostageStampLargerThanItsSpaceIsAnError) {
