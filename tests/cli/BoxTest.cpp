@@ -77,11 +77,7 @@ json lampOverFloor(const std::string& integrator, int spp) {
 }
 
 PixelOracle floorBesideTheLamp() {
-    return [](const RayD& ray) -> std::optional<Radiance> {
-        const Vec3d p = ray.at(intersectPlane(ray, Vec3d(0, 0, 0), Vec3d(0, 1, 0)).value());
-        const double L = kKd * lampIrradiance(p) / kPi;
-        return Radiance{L, L, L};
-    };
+    return lambertianFloor(kKd, lampIrradiance);
 }
 
 // Six lights, one per face, of which three light the view: 16384 samples bring the noise to 1%.

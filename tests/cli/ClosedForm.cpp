@@ -95,6 +95,14 @@ double distanceToLine(const Vec3d& point, const RayD& ray) {
     return length(toPoint - dot(toPoint, ray.direction) * ray.direction);
 }
 
+PixelOracle lambertianFloor(double kd, std::function<double(const Vec3d& p)> irradiance) {
+    return [kd, irradiance = std::move(irradiance)](const RayD& ray) -> std::optional<Radiance> {
+        const Vec3d p = ray.at(intersectPlane(ray, Vec3d(0, 0, 0), Vec3d(0, 1, 0)).value());
+        const double L = kd * irradiance(p) / 3.14159265358979323846;
+        return Radiance{L, L, L};
+    };
+}
+
 int expectPixelsMatch(const Image& image, const CameraModel& camera, const PixelOracle& expected,
                       double relative, double absolute) {
     EXPECT_EQ(image.encoding, Image::Encoding::LinearFloat);

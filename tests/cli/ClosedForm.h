@@ -84,6 +84,10 @@ double distanceToLine(const Vec3d& point, const RayD& ray);
 // unchecked because it lies within rounding distance of an edge (a silhouette, a shadow border).
 using PixelOracle = std::function<std::optional<Radiance>(const RayD& ray)>;
 
+// What a Lambertian floor on y = 0 of albedo kd shows where it receives the irradiance E(p):
+// kd E / pi.
+PixelOracle lambertianFloor(double kd, std::function<double(const Vec3d& p)> irradiance);
+
 // Checks each pixel of a linear image against the oracle: |rendered - expected| <= absolute +
 // relative * |expected| in every channel. Reports the first few mismatches with their
 // coordinates and returns how many pixels were checked.

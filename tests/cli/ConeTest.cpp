@@ -49,11 +49,7 @@ json lampOverFloor(const std::string& integrator, int spp) {
 }
 
 PixelOracle floorUnderTheLamp() {
-    return [](const RayD& ray) -> std::optional<Radiance> {
-        const Vec3d p = ray.at(intersectPlane(ray, Vec3d(0, 0, 0), Vec3d(0, 1, 0)).value());
-        const double L = 0.5 * capIrradiance(std::hypot(p.x, p.z)) / kPi;
-        return Radiance{L, L, L};
-    };
+    return lambertianFloor(0.5, [](const Vec3d& p) { return capIrradiance(std::hypot(p.x, p.z)); });
 }
 
 TEST(CliCone, AnEmissiveCylinderLightsTheFloorUnderItByItsCapInPath) {

@@ -58,11 +58,8 @@ json diskOverFloor(const std::string& integrator, int spp) {
 }
 
 PixelOracle floorUnderTheDisk() {
-    return [](const RayD& ray) -> std::optional<Radiance> {
-        const Vec3d p = ray.at(intersectPlane(ray, Vec3d(0, 0, 0), Vec3d(0, 1, 0)).value());
-        const double L = kKd * diskIrradiance(std::hypot(p.x, p.z)) / 3.14159265358979323846;
-        return Radiance{L, L, L};
-    };
+    return lambertianFloor(kKd,
+                           [](const Vec3d& p) { return diskIrradiance(std::hypot(p.x, p.z)); });
 }
 
 TEST(CliDisk, AnEmissiveDiskLightsTheFloorAsTheClosedFormSaysInPath) {

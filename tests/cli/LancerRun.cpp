@@ -54,16 +54,18 @@ std::ostream& operator<<(std::ostream& out, const RunResult& run) {
 
 #ifndef _WIN32
 
+LancerArguments::LancerArguments(const std::vector<std::string>& arguments) : strings_{LANCER_EXE} {
+    strings_.insert(strings_.end(), arguments.begin(), arguments.end());
+    for (std::string& argument : strings_)
+        pointers_.push_back(argument.data());
+    pointers_.push_back(nullptr);
+}
+
 LancerProcess::LancerProcess(const std::vector<std::string>& arguments,
                              const fs::path& workingFolder, std::size_t fileSizeLimit) {
     // Everything the child needs is prepared before fork(): after it, only async-signal-safe
     // calls are allowed.
-    std::vector<std::string> argv{LANCER_EXE};
-    argv.insert(argv.end(), arguments.begin(), arguments.end());
-    std::vector<char*> cArgv;
-    for (std::string& argument : argv)
-        cArgv.push_back(argument.data());
-    cArgv.push_back(nullptr);
+    LancerArguments argv(arguments);
     const std::string folder = workingFolder.string();
     const std::string stdoutPath = (captureFolder_ / "stdout").string();
     const std::string stderrPath = (captureFolder_ / "stderr").string();
@@ -80,7 +82,7 @@ LancerProcess::LancerProcess(const std::vector<std::string>& arguments,
         signal(SIGINT, SIG_DFL);
         const rlimit fileSize{fileSizeLimit, fileSizeLimit};
         if (fileSizeLimit > 0 && setrlimit(RLIMIT_FSIZE, &fileSize) != 0) _exit(127);
-        execv(cArgv[0], cArgv.data());
+        execv(argv.argv()[0], argv.argv());
         _exit(127);
     }
 }

@@ -43,6 +43,23 @@ RunResult runLancer(const std::vector<std::string>& arguments, const fs::path& w
                     std::chrono::milliseconds timeout = kRunTimeout);
 
 #ifndef _WIN32
+// The argument vector of a lancer child process, built before fork(): after it, only
+// async-signal-safe calls are allowed.
+class LancerArguments {
+public:
+    explicit LancerArguments(const std::vector<std::string>& arguments);
+    // The pointers point into this object.
+    LancerArguments(const LancerArguments&) = delete;
+    LancerArguments& operator=(const LancerArguments&) = delete;
+
+    // For execv(): the program, then the arguments, then null.
+    char* const* argv() { return pointers_.data(); }
+
+private:
+    std::vector<std::string> strings_;
+    std::vector<char*> pointers_;
+};
+
 // A lancer process running in the background, for tests that signal it while it works.
 class LancerProcess {
 public:

@@ -10,6 +10,8 @@
 
 #include <stdexcept>
 
+#include "LancerRun.h"
+
 namespace lancer::test {
 
 namespace {
@@ -29,12 +31,7 @@ TerminalRun::TerminalRun(const std::vector<std::string>& arguments,
                          std::chrono::milliseconds timeout) {
     // Everything the child needs is prepared before fork(): after it, only async-signal-safe
     // calls are allowed.
-    std::vector<std::string> argv{LANCER_EXE};
-    argv.insert(argv.end(), arguments.begin(), arguments.end());
-    std::vector<char*> cArgv;
-    for (std::string& argument : argv)
-        cArgv.push_back(argument.data());
-    cArgv.push_back(nullptr);
+    LancerArguments argv(arguments);
     const std::string folder = workingFolder.string();
 
     winsize size = sizeOf(columns);
@@ -43,7 +40,7 @@ TerminalRun::TerminalRun(const std::vector<std::string>& arguments,
     if (pid_ == 0) {
         if (chdir(folder.c_str()) != 0) _exit(127);
         signal(SIGINT, SIG_DFL);
-        execv(cArgv[0], cArgv.data());
+        execv(argv.argv()[0], argv.argv());
         _exit(127);
     }
     const auto deadline = std::chrono::steady_clock::now() + timeout;
