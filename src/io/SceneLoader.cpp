@@ -16,6 +16,7 @@
 #include "geometry/Plane.h"
 #include "geometry/Quad.h"
 #include "geometry/Sphere.h"
+#include "geometry/Torus.h"
 #include "geometry/Triangle.h"
 #include "integrators/IntegratorRegistry.h"
 #include "io/ImageReader.h"
@@ -245,6 +246,7 @@ const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectType
         {"box", "a box", &Reader::loadShape<Box>},
         {"cylinder", "a cylinder", &Reader::loadShape<Cylinder>},
         {"cone", "a cone", &Reader::loadShape<Cone>},
+        {"torus", "a torus", &Reader::loadShape<Torus>},
     };
     return types;
 }

@@ -20,6 +20,7 @@
 #include "geometry/Plane.h"
 #include "geometry/Quad.h"
 #include "geometry/Sphere.h"
+#include "geometry/Torus.h"
 #include "geometry/Triangle.h"
 #include "materials/BlinnPhongMaterial.h"
 #include "math/Transform.h"
@@ -125,6 +126,20 @@ std::vector<ShapeCase> shapeCases() {
              return std::make_unique<Instance>(
                  std::make_shared<Cone>(Vec3(0, -0.5f, 0), 0.4f, Vec3(0, 0.5f, 0), 0.8f, false,
                                         nullptr),
+                 stretchAndTurn, &kMaterial);
+         },
+         false},
+        // Samples on the far side of the tube, or across the hole, are hidden by the near side.
+        {"Torus",
+         [] {
+             return std::make_unique<Torus>(Vec3(0.1f, -0.2f, 0.15f), Vec3(0.3f, 1, -0.4f), 0.8f,
+                                            0.3f, &kMaterial);
+         },
+         false},
+        {"InstancedTorus",
+         [=] {
+             return std::make_unique<Instance>(
+                 std::make_shared<Torus>(Vec3(0), Vec3(0, 1, 0), 0.7f, 0.25f, nullptr),
                  stretchAndTurn, &kMaterial);
          },
          false},
