@@ -61,19 +61,11 @@ const CameraModel kFloorCamera{.position = {1.2, 0.9, 0.3},
                                .height = 9};
 
 json lampOverFloor(const std::string& integrator, int spp) {
-    json scene = json::parse(R"({
-      "background": 0, "ambient": 0,
-      "materials": { "floor": { "diffuse": 0.5 }, "lamp": { "diffuse": 0, "emission": 2 } },
-      "objects": [
-        { "type": "disk", "center": [1.2, 0, 0.3], "normal": [0, 1, 0], "radius": 0.6,
-          "material": "floor" },
-        { "type": "box", "min": [-0.5, 1, -0.5], "max": [0.5, 1.5, 0.5], "material": "lamp" } ]
-    })");
-    kFloorCamera.placeIn(scene);
-    scene["render"]["integrator"] = integrator;
-    scene["render"]["spp"] = spp;
-    scene["render"]["max_depth"] = 1;
-    return scene;
+    return emitterOverFloor(
+        json::parse(
+            R"({ "type": "disk", "center": [1.2, 0, 0.3], "normal": [0, 1, 0], "radius": 0.6 })"),
+        json::parse(R"({ "type": "box", "min": [-0.5, 1, -0.5], "max": [0.5, 1.5, 0.5] })"),
+        kFloorCamera, integrator, spp);
 }
 
 PixelOracle floorBesideTheLamp() {

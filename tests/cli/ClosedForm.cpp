@@ -95,6 +95,22 @@ double distanceToLine(const Vec3d& point, const RayD& ray) {
     return length(toPoint - dot(toPoint, ray.direction) * ray.direction);
 }
 
+nlohmann::json emitterOverFloor(const nlohmann::json& floor, const nlohmann::json& lamp,
+                                const CameraModel& camera, const std::string& integrator, int spp) {
+    nlohmann::json scene = nlohmann::json::parse(R"({
+      "background": 0, "ambient": 0,
+      "materials": { "floor": { "diffuse": 0.5 }, "lamp": { "diffuse": 0, "emission": 2 } }
+    })");
+    scene["objects"] = {floor, lamp};
+    scene["objects"][0]["material"] = "floor";
+    scene["objects"][1]["material"] = "lamp";
+    camera.placeIn(scene);
+    scene["render"]["integrator"] = integrator;
+    scene["render"]["spp"] = spp;
+    scene["render"]["max_depth"] = 1;
+    return scene;
+}
+
 PixelOracle lambertianFloor(double kd, std::function<double(const Vec3d& p)> irradiance) {
     return [kd, irradiance = std::move(irradiance)](const RayD& ray) -> std::optional<Radiance> {
         const Vec3d p = ray.at(intersectPlane(ray, Vec3d(0, 0, 0), Vec3d(0, 1, 0)).value());

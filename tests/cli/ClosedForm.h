@@ -84,6 +84,12 @@ double distanceToLine(const Vec3d& point, const RayD& ray);
 // unchecked because it lies within rounding distance of an edge (a silhouette, a shadow border).
 using PixelOracle = std::function<std::optional<Radiance>(const RayD& ray)>;
 
+// The scene of an emitter over a floor, as the shape tests light it: `floor` and `lamp` (objects
+// without their materials) get a Lambertian floor of albedo 0.5 and a lamp of radiance 2 that
+// reflects nothing, on black; the camera placed, direct light only (max_depth 1).
+nlohmann::json emitterOverFloor(const nlohmann::json& floor, const nlohmann::json& lamp,
+                                const CameraModel& camera, const std::string& integrator, int spp);
+
 // What a Lambertian floor on y = 0 of albedo kd shows where it receives the irradiance E(p):
 // kd E / pi.
 PixelOracle lambertianFloor(double kd, std::function<double(const Vec3d& p)> irradiance);

@@ -32,20 +32,11 @@ const CameraModel kFloorCamera{.position = {0, 0.95, 0},
                                .height = 9};
 
 json lampOverFloor(const std::string& integrator, int spp) {
-    json scene = json::parse(R"({
-      "background": 0, "ambient": 0,
-      "materials": { "floor": { "diffuse": 0.5 }, "lamp": { "diffuse": 0, "emission": 2 } },
-      "objects": [
-        { "type": "disk", "center": [0, 0, 0], "normal": [0, 1, 0], "radius": 1,
-          "material": "floor" },
-        { "type": "cylinder", "base": [0, 1, 0], "top": [0, 1.5, 0], "radius": 0.5,
-          "material": "lamp" } ]
-    })");
-    kFloorCamera.placeIn(scene);
-    scene["render"]["integrator"] = integrator;
-    scene["render"]["spp"] = spp;
-    scene["render"]["max_depth"] = 1;
-    return scene;
+    return emitterOverFloor(
+        json::parse(R"({ "type": "disk", "center": [0, 0, 0], "normal": [0, 1, 0], "radius": 1 })"),
+        json::parse(
+            R"({ "type": "cylinder", "base": [0, 1, 0], "top": [0, 1.5, 0], "radius": 0.5 })"),
+        kFloorCamera, integrator, spp);
 }
 
 PixelOracle floorUnderTheLamp() {

@@ -41,20 +41,11 @@ const CameraModel kFloorCamera{
     .height = 9};
 
 json diskOverFloor(const std::string& integrator, int spp) {
-    json scene = json::parse(R"({
-      "background": 0, "ambient": 0,
-      "materials": { "floor": { "diffuse": 0.5 }, "lamp": { "diffuse": 0, "emission": 2 } },
-      "objects": [
-        { "type": "disk", "center": [0, 0, 0], "normal": [0, 1, 0], "radius": 1,
-          "material": "floor" },
-        { "type": "disk", "center": [0, 1, 0], "normal": [0, -1, 0], "radius": 0.5,
-          "material": "lamp" } ]
-    })");
-    kFloorCamera.placeIn(scene);
-    scene["render"]["integrator"] = integrator;
-    scene["render"]["spp"] = spp;
-    scene["render"]["max_depth"] = 1;
-    return scene;
+    return emitterOverFloor(
+        json::parse(R"({ "type": "disk", "center": [0, 0, 0], "normal": [0, 1, 0], "radius": 1 })"),
+        json::parse(
+            R"({ "type": "disk", "center": [0, 1, 0], "normal": [0, -1, 0], "radius": 0.5 })"),
+        kFloorCamera, integrator, spp);
 }
 
 PixelOracle floorUnderTheDisk() {

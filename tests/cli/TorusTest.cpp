@@ -161,20 +161,12 @@ const CameraModel kFloorCamera{.position = {0, 0.5, 0},
                                .height = 7};
 
 json lampOverFloor(const std::string& integrator, int spp) {
-    json scene = json::parse(R"({
-      "background": 0, "ambient": 0,
-      "materials": { "floor": { "diffuse": 0.5 }, "lamp": { "diffuse": 0, "emission": 2 } },
-      "objects": [
-        { "type": "disk", "center": [0, 0, 0], "normal": [0, 1, 0], "radius": 1.2,
-          "material": "floor" },
-        { "type": "torus", "center": [0, 1, 0], "major_radius": 0.6, "minor_radius": 0.25,
-          "material": "lamp" } ]
-    })");
-    kFloorCamera.placeIn(scene);
-    scene["render"]["integrator"] = integrator;
-    scene["render"]["spp"] = spp;
-    scene["render"]["max_depth"] = 1;
-    return scene;
+    return emitterOverFloor(
+        json::parse(
+            R"({ "type": "disk", "center": [0, 0, 0], "normal": [0, 1, 0], "radius": 1.2 })"),
+        json::parse(
+            R"({ "type": "torus", "center": [0, 1, 0], "major_radius": 0.6, "minor_radius": 0.25 })"),
+        kFloorCamera, integrator, spp);
 }
 
 // The floor's radiance 0.5 E / pi, where E = 2 pi times the fraction of cosine-distributed
