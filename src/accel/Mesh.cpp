@@ -1,5 +1,9 @@
 #include "accel/Mesh.h"
 
+#include <algorithm>
+#include <tuple>
+#include <utility>
+
 #include "geometry/Triangle.h"
 #include "util/ParallelFor.h"
 
@@ -127,6 +131,94 @@ bool Mesh::occluded(const Ray& ray, float tMax) const {
     };
     const auto prefetchLeaf = [&](std::uint32_t firstPack) { prefetchPack(firstPack); };
     return bvh_.occluded(ray, tMax, occludedLeaf, prefetchLeaf);
+}
+
+void Mesh::crossLine(const Ray& ray, LineCrossings& crossings) const {
+    // Every hit of the ray forward, and of its reverse backward, each tested from the ray's own
+    // origin as cross() tests it: the signs of t are those cross() sees.
+    std::array<LineCrossings, 2> halves;  // behind the origin, then ahead of it
+    for (const int half : {0, 1}) {
+        const float way = half == 0 ? -1.0f : 1.0f;
+        const Ray halfRay{ray.origin, way * ray.direction};
+        const TriangleIntersector intersector(halfRay);
+        if (!intersector.canHit()) return;
+        const auto collectLeaf = [&](std::uint32_t firstPack, std::uint32_t count, float tFar) {
+            for (std::uint32_t p = 0; p < packCount(count); ++p) {
+                const TrianglePack& pack = packs_[firstPack + p];
+                const PackHits hits = intersector.intersect(pack, leafLanes(p, count), tFar);
+                for (int lane = 0; lane < TrianglePack::kLanes; ++lane) {
+                    if (!(hits.lanes >> lane & 1)) continue;
+                    const std::uint32_t triangle = pack.triangle[lane];
+                    const std::array<Vec3, 3> v = vertices(triangle);
+                    const Vec3 front = lancer::cross(v[1] - v[0], v[2] - v[0]);
+                    const double t = way * static_cast<double>(hits.t[lane]);
+                    halves[half].push_back({SurfaceCrossing{t, t, triangle, hits.b0[lane],
+                                                            hits.b1[lane], hits.b2[lane]},
+                                            dot(ray.direction, front) < 0});
+                }
+            }
+            return false;  // every leaf the ray reaches
+        };
+        const auto prefetchLeaf = [&](std::uint32_t firstPack) { prefetchPack(firstPack); };
+        bvh_.occluded(halfRay, kInfinity, collectLeaf, prefetchLeaf);
+        std::sort(halves[half].begin(), halves[half].end(),
+                  [](const LineCrossing& a, const LineCrossing& b) {
+                      return a.crossing.t < b.crossing.t;
+                  });
+    }
+    // Along a line through a closed, outward-wound surface the crossings alternate, entering
+    // first: two in a row of the same kind are one crossing counted by both triangles of an edge
+    // (or the corners of a vertex) that the line passes through.
+    bool inside = false;
+    const auto add = [&](const LineCrossing& c) {
+        if (c.entering == inside) return;
+        crossings.push_back(c);
+        inside = c.entering;
+    };
+    for (const LineCrossing& c : halves[0])
+        add(c);
+    // The surface a spawned ray leaves lies within rounding error of its origin, where both
+    // tests reject t as not certainly of its sign: the alternation says when one was lost. It
+    // comes back at t = 0, where nothing is recorded, only the inside changes.
+    const LineCrossings& ahead = halves[1];
+    if (ahead.empty() ? inside : ahead.front().entering == inside) {
+        crossings.push_back({SurfaceCrossing{0, 0}, !inside});
+        inside = !inside;
+    }
+    for (const LineCrossing& c : ahead)
+        add(c);
+}
+
+bool Mesh::isSolid() const {
+    // Closed: the vertices welded by position, every directed edge of a triangle is met once,
+    // and once in the other direction by a neighbour (which also makes the winding consistent).
+    std::vector<Vec3> positions = triangles_.positions;
+    const auto before = [](const Vec3& a, const Vec3& b) {
+        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+    };
+    std::sort(positions.begin(), positions.end(), before);
+    positions.erase(std::unique(positions.begin(), positions.end()), positions.end());
+    const auto welded = [&](std::uint32_t vertex) {
+        const Vec3& p = triangles_.positions[vertex];
+        return static_cast<std::uint32_t>(
+            std::lower_bound(positions.begin(), positions.end(), p, before) - positions.begin());
+    };
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+    edges.reserve(triangles_.indices.size());
+    for (std::size_t i = 0; i < triangles_.indices.size(); i += 3) {
+        const std::array<std::uint32_t, 3> v{welded(triangles_.indices[i]),
+                                             welded(triangles_.indices[i + 1]),
+                                             welded(triangles_.indices[i + 2])};
+        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;  // no area: no surface
+        for (int k = 0; k < 3; ++k)
+            edges.emplace_back(v[k], v[(k + 1) % 3]);
+    }
+    if (edges.empty()) return false;
+    std::sort(edges.begin(), edges.end());
+    if (std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return false;
+    return std::all_of(edges.begin(), edges.end(), [&](const auto& edge) {
+        return std::binary_search(edges.begin(), edges.end(), std::pair{edge.second, edge.first});
+    });
 }
 
 const Material* Mesh::primitiveMaterial(std::uint32_t triangle) const {

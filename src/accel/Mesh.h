@@ -20,6 +20,10 @@ public:
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     bool occluded(const Ray& ray, float tMax) const override;
     Bounds3 bounds() const override { return bvh_.bounds(); }
+    // A closed model, wound outwards, is a solid (checked by welding its vertices by position:
+    // each call walks all its edges).
+    bool isSolid() const override;
+    void crossLine(const Ray& ray, LineCrossings& crossings) const override;
     bool emitsOnBothSides() const override { return false; }
     std::uint32_t primitiveCount() const override {
         return static_cast<std::uint32_t>(triangles_.triangleCount());

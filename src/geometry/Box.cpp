@@ -34,12 +34,11 @@ Vec3 Box::pointAt(const Face& f, float u, float v) const {
     return p;
 }
 
-std::optional<SurfaceCrossing> Box::cross(const Ray& ray, float tMax) const {
+std::optional<Box::LineSpan> Box::lineSpan(const Ray& ray) const {
     // The slabs in double: where the ray enters the box (the last slab entered) and leaves it
     // (the first slab left), and by which faces.
-    double tEnter = -std::numeric_limits<double>::infinity(),
-           tExit = std::numeric_limits<double>::infinity();
-    std::uint32_t enterFace = 0, exitFace = 0;
+    LineSpan span{-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                  0, 0};
     for (int axis = 0; axis < 3; ++axis) {
         const double o = ray.origin[axis], d = ray.direction[axis];
         const double lo = min_[axis], hi = max_[axis];
@@ -54,21 +53,37 @@ std::optional<SurfaceCrossing> Box::cross(const Ray& ray, float tMax) const {
             std::swap(tNear, tFar);
             std::swap(nearFace, farFace);
         }
-        if (tNear > tEnter) {
-            tEnter = tNear;
-            enterFace = nearFace;
+        if (tNear > span.tEnter) {
+            span.tEnter = tNear;
+            span.enterFace = nearFace;
         }
-        if (tFar < tExit) {
-            tExit = tFar;
-            exitFace = farFace;
+        if (tFar < span.tExit) {
+            span.tExit = tFar;
+            span.exitFace = farFace;
         }
     }
-    if (tEnter > tExit) return std::nullopt;
+    if (span.tEnter > span.tExit) return std::nullopt;
+    return span;
+}
+
+std::optional<SurfaceCrossing> Box::cross(const Ray& ray, float tMax) const {
+    const std::optional<LineSpan> span = lineSpan(ray);
+    if (!span) return std::nullopt;
     // From outside the box the entry is the crossing; from inside (or on the surface, leaving)
     // the exit is.
-    if (tEnter > 0 && tEnter < tMax) return SurfaceCrossing{tEnter, tEnter, enterFace};
-    if (tExit > 0 && tExit < tMax) return SurfaceCrossing{tExit, tExit, exitFace};
+    if (span->tEnter > 0 && span->tEnter < tMax)
+        return SurfaceCrossing{span->tEnter, span->tEnter, span->enterFace};
+    if (span->tExit > 0 && span->tExit < tMax)
+        return SurfaceCrossing{span->tExit, span->tExit, span->exitFace};
     return std::nullopt;
+}
+
+void Box::crossLine(const Ray& ray, LineCrossings& crossings) const {
+    const std::optional<LineSpan> span = lineSpan(ray);
+    // A line along a face (d = 0 on its axis, o on its plane) runs on the surface: no crossing.
+    if (!span || !std::isfinite(span->tEnter)) return;
+    crossings.push_back({SurfaceCrossing{span->tEnter, span->tEnter, span->enterFace}, true});
+    crossings.push_back({SurfaceCrossing{span->tExit, span->tExit, span->exitFace}, false});
 }
 
 Hit Box::record(const Ray& ray, const SurfaceCrossing& crossing) const {

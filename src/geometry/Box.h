@@ -24,6 +24,8 @@ public:
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override { return {min_, max_}; }
+    bool isSolid() const override { return true; }
+    void crossLine(const Ray& ray, LineCrossings& crossings) const override;
     // A solid's surface gives light to its outside only.
     bool emitsOnBothSides() const override { return false; }
     std::uint32_t primitiveCount() const override { return 6; }
@@ -33,6 +35,12 @@ public:
     Tessellation tessellate(const TessellationRequest& request) const override;
 
 private:
+    // Where the ray's line enters the box and leaves it, and through which faces.
+    struct LineSpan {
+        double tEnter, tExit;
+        std::uint32_t enterFace, exitFace;
+    };
+    std::optional<LineSpan> lineSpan(const Ray& ray) const;
     // How a face lies: the axis it is normal to, the corner coordinate it sits at, and the axes
     // its u and v follow.
     struct Face {

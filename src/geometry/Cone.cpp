@@ -57,7 +57,7 @@ Bounds3 Cone::bounds() const {
     return {box.min - slack, box.max + slack};
 }
 
-std::optional<SurfaceCrossing> Cone::cross(const Ray& ray, float tMax) const {
+Cone::SideCrossings Cone::sideCrossings(const Ray& ray) const {
     // The side in double, in the frame of the axis: x^2 + y^2 = (r0 + k z)^2 for z in [0, h].
     const Vec3d o = Vec3d(ray.origin) - Vec3d(base_), d(ray.direction);
     const Vec3d t1(tangent_), t2(bitangent_), a(axis_);
@@ -65,6 +65,7 @@ std::optional<SurfaceCrossing> Cone::cross(const Ray& ray, float tMax) const {
     const double dx = dot(d, t1), dy = dot(d, t2), dz = dot(d, a);
     const double h = height_, k = (static_cast<double>(topRadius_) - baseRadius_) / h;
     const double radiusAtOrigin = baseRadius_ + k * oz;
+    // f(t) = A t^2 + 2 B t + C, negative inside the side.
     const double A = dx * dx + dy * dy - k * k * dz * dz;
     const double B = ox * dx + oy * dy - k * dz * radiusAtOrigin;
     const double C = ox * ox + oy * oy - radiusAtOrigin * radiusAtOrigin;
@@ -79,14 +80,26 @@ std::optional<SurfaceCrossing> Cone::cross(const Ray& ray, float tMax) const {
         roots[rootCount++] = q != 0 ? C / q : q / A;
         if (roots[0] > roots[1]) std::swap(roots[0], roots[1]);
     }
-    std::optional<SurfaceCrossing> nearest;
-    double tNearest = tMax;
+    SideCrossings side;
     for (int i = 0; i < rootCount; ++i) {
         const double t = roots[static_cast<std::size_t>(i)];
         const double z = oz + t * dz;
-        if (t > 0 && t < tNearest && z >= 0 && z <= h) {
-            nearest = SurfaceCrossing{t, t, 0};
-            tNearest = t;
+        // f decreases where the line enters.
+        if (z >= 0 && z <= h)
+            side.crossings[side.count++] = {SurfaceCrossing{t, t, 0}, A * t + B < 0};
+    }
+    return side;
+}
+
+std::optional<SurfaceCrossing> Cone::cross(const Ray& ray, float tMax) const {
+    std::optional<SurfaceCrossing> nearest;
+    double tNearest = tMax;
+    const SideCrossings side = sideCrossings(ray);
+    for (int i = 0; i < side.count; ++i) {
+        const SurfaceCrossing& c = side.crossings[static_cast<std::size_t>(i)].crossing;
+        if (c.t > 0 && c.t < tNearest) {
+            nearest = c;
+            tNearest = c.t;
             break;
         }
     }
@@ -99,6 +112,22 @@ std::optional<SurfaceCrossing> Cone::cross(const Ray& ray, float tMax) const {
             tNearest = cap->t;
         }
     return nearest;
+}
+
+void Cone::crossLine(const Ray& ray, LineCrossings& crossings) const {
+    const std::size_t first = crossings.size();
+    const SideCrossings side = sideCrossings(ray);
+    crossings.insert(crossings.end(), side.crossings.begin(), side.crossings.begin() + side.count);
+    for (std::size_t i = 0; i < caps_.size(); ++i)
+        if (std::optional<SurfaceCrossing> cap = caps_[i]->lineCrossing(ray)) {
+            cap->primitive = static_cast<std::uint32_t>(1 + i);
+            // The caps face out of the solid: along -axis at the base, +axis at the top.
+            const bool entering = dot(ray.direction, caps_[i]->normal()) < 0;
+            crossings.push_back({*cap, entering});
+        }
+    std::sort(
+        crossings.begin() + static_cast<std::ptrdiff_t>(first), crossings.end(),
+        [](const LineCrossing& a, const LineCrossing& b) { return a.crossing.t < b.crossing.t; });
 }
 
 Hit Cone::record(const Ray& ray, const SurfaceCrossing& crossing) const {

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,6 +33,9 @@ public:
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override;
+    // Closed, it is a solid.
+    bool isSolid() const override { return !caps_.empty(); }
+    void crossLine(const Ray& ray, LineCrossings& crossings) const override;
     // A closed cone gives light to its outside only; an open one is a two-sided surface.
     bool emitsOnBothSides() const override { return caps_.empty(); }
     std::uint32_t primitiveCount() const override {
@@ -47,6 +51,12 @@ protected:
     static void checkAxis(const Parameters& parameters, const Vec3& base, const Vec3& top);
 
 private:
+    // Where the ray's whole line crosses the side, in increasing t, entering or leaving.
+    struct SideCrossings {
+        std::array<LineCrossing, 2> crossings;
+        int count = 0;
+    };
+    SideCrossings sideCrossings(const Ray& ray) const;
     // The side's point at angle phi about the axis and height z above the base.
     Vec3 sidePoint(float phi, float z) const;
     float radiusAt(float z) const { return baseRadius_ + (topRadius_ - baseRadius_) * z / height_; }

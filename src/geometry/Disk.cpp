@@ -45,11 +45,21 @@ Bounds3 Disk::bounds() const {
 std::optional<SurfaceCrossing> Disk::cross(const Ray& ray, float tMax) const {
     const std::optional<PlaneCrossing> crossing =
         PlaneCrossing::find(ray, Vec3d(center_), Vec3d(normal_), tMax);
-    if (!crossing) return std::nullopt;
-    const double r2 = dot(crossing->offset, crossing->offset);
-    const double R = radius_, Ri = innerRadius_;
-    if (r2 > R * R || r2 < Ri * Ri) return std::nullopt;
+    if (!crossing || !withinRing(*crossing)) return std::nullopt;
     return SurfaceCrossing{crossing->t, crossing->t};
+}
+
+std::optional<SurfaceCrossing> Disk::lineCrossing(const Ray& ray) const {
+    const Vec3d c(center_), n(normal_);
+    const std::optional<double> t = PlaneCrossing::lineParameter(ray, c, n);
+    if (!t || !withinRing(PlaneCrossing::at(ray, c, n, *t))) return std::nullopt;
+    return SurfaceCrossing{*t, *t};
+}
+
+bool Disk::withinRing(const PlaneCrossing& crossing) const {
+    const double r2 = dot(crossing.offset, crossing.offset);
+    const double R = radius_, Ri = innerRadius_;
+    return r2 <= R * R && r2 >= Ri * Ri;
 }
 
 Hit Disk::record(const Ray& ray, const SurfaceCrossing& crossing) const {

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "geometry/PlaneCrossing.h"
 #include "geometry/Shape.h"
 #include "util/Parameters.h"
 
@@ -26,6 +27,9 @@ public:
 
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
+    // Where the ray's whole line crosses the disk (t of either sign), as cross() would find it.
+    std::optional<SurfaceCrossing> lineCrossing(const Ray& ray) const;
+    const Vec3& normal() const { return normal_; }
     Bounds3 bounds() const override;
     float area(std::uint32_t primitive) const override;
     std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const override;
@@ -34,6 +38,7 @@ public:
     Tessellation tessellate(const TessellationRequest& request) const override;
 
 private:
+    bool withinRing(const PlaneCrossing& crossing) const;
     // The point at polar coordinates (r, phi) in the disk's plane.
     Vec3 pointAt(float r, float phi) const;
 

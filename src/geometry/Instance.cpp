@@ -57,6 +57,17 @@ std::optional<SurfaceCrossing> Instance::cross(const Ray& ray, float tMax) const
     return crossing;
 }
 
+void Instance::crossLine(const Ray& ray, LineCrossings& crossings) const {
+    float shift;
+    const Ray local = toObject(ray, shift);
+    const std::size_t first = crossings.size();
+    shape_->crossLine(local, crossings);
+    for (std::size_t i = first; i < crossings.size(); ++i) {
+        double& t = crossings[i].crossing.t;
+        t = static_cast<float>(t) + shift;
+    }
+}
+
 Hit Instance::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     float shift;
     const Ray local = toObject(ray, shift);

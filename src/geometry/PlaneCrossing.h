@@ -17,16 +17,20 @@ struct PlaneCrossing {
 
     static std::optional<PlaneCrossing> find(const Ray& ray, const Vec3d& origin, const Vec3d& n,
                                              float tMax) {
-        const Vec3d d(ray.direction);
-        const double denominator = dot(n, d);
-        if (denominator == 0) return std::nullopt;  // parallel: never meets the plane
-        const Vec3d o(ray.origin);
-        const double t = dot(n, origin - o) / denominator;
-        if (!(t > 0 && t < tMax)) return std::nullopt;
-        return at(ray, origin, n, t);
+        const std::optional<double> t = lineParameter(ray, origin, n);
+        if (!t || !(*t > 0 && *t < tMax)) return std::nullopt;
+        return at(ray, origin, n, *t);
     }
 
-    // The crossing at a t that find() returned.
+    // Where the ray's whole line crosses the plane (t of either sign); nothing when parallel.
+    static std::optional<double> lineParameter(const Ray& ray, const Vec3d& origin,
+                                               const Vec3d& n) {
+        const double denominator = dot(n, Vec3d(ray.direction));
+        if (denominator == 0) return std::nullopt;  // parallel: never meets the plane
+        return dot(n, origin - Vec3d(ray.origin)) / denominator;
+    }
+
+    // The crossing at a t that find() or lineParameter() returned.
     static PlaneCrossing at(const Ray& ray, const Vec3d& origin, const Vec3d& n, double t) {
         Vec3d q = Vec3d(ray.origin) + t * Vec3d(ray.direction) - origin;
         q -= (dot(n, q) / dot(n, n)) * n;

@@ -4,6 +4,20 @@
 
 namespace lancer {
 
+bool Shape::contains(const Vec3& p) const {
+    // Along a direction unlikely to run along an edge or a face of a modelled solid; inside
+    // where more crossings behind p enter than leave.
+    const Ray line{p, Vec3(0.5773f, 0.6019f, 0.5519f)};
+    LineCrossings crossings;
+    crossLine(line, crossings);
+    int depth = 0;
+    for (const LineCrossing& c : crossings) {
+        if (c.crossing.t >= 0) break;
+        depth += c.entering ? 1 : -1;
+    }
+    return depth > 0;
+}
+
 float Shape::areaPdf(std::uint32_t primitive, const Hit&) const {
     return 1 / area(primitive);
 }

@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "geometry/Hit.h"
+#include "geometry/LineCrossing.h"
 #include "geometry/ShapeSample.h"
 #include "geometry/SurfaceCrossing.h"
 #include "geometry/Tessellation.h"
@@ -44,6 +45,17 @@ public:
     // Whether anything is hit with 0 < t < tMax: shadow rays, which need no hit record and can
     // stop at the first hit found.
     virtual bool occluded(const Ray& ray, float tMax) const { return cross(ray, tMax).has_value(); }
+
+    // Whether the surface is closed around a volume with its normals pointing out (a sphere, a
+    // box, a closed cylinder, a closed mesh...): a solid, which CSG can combine.
+    virtual bool isSolid() const { return false; }
+    // For a solid: appends every crossing of the ray's whole line with the surface, in
+    // increasing t (of either sign), each entering or leaving the solid. Not asked of other
+    // shapes (which append nothing, or what they would be crossed at).
+    virtual void crossLine(const Ray&, LineCrossings&) const {}
+    // For a solid: whether p lies inside it, from the crossings of a line through p (so on the
+    // surface the answer is either).
+    bool contains(const Vec3& p) const;
 
     // The box the shape fits in. Only meaningful when isBounded().
     virtual Bounds3 bounds() const = 0;

@@ -18,7 +18,7 @@ Bounds3 Sphere::bounds() const {
     return {center_ - Vec3(radius_), center_ + Vec3(radius_)};
 }
 
-std::optional<SurfaceCrossing> Sphere::cross(const Ray& ray, float tMax) const {
+std::optional<std::pair<double, double>> Sphere::lineRoots(const Ray& ray) const {
     // Solved in double precision: the roots, and so the side of the surface a spawned ray starts
     // on, are then exact to far below the float error bound used to offset spawned rays.
     const Vec3d o = Vec3d(ray.origin) - Vec3d(center_);
@@ -34,13 +34,26 @@ std::optional<SurfaceCrossing> Sphere::cross(const Ray& ray, float tMax) const {
     const double discriminant = a * (r * r - dot(toLine, toLine));
     if (discriminant < 0) return std::nullopt;
     const double q = -(halfB + std::copysign(std::sqrt(discriminant), halfB));
-    double t0 = q / a;
-    double t1 = q != 0 ? c / q : t0;
-    if (t0 > t1) std::swap(t0, t1);
+    const double t0 = q / a;
+    const double t1 = q != 0 ? c / q : t0;
+    return std::pair{std::min(t0, t1), std::max(t0, t1)};
+}
+
+std::optional<SurfaceCrossing> Sphere::cross(const Ray& ray, float tMax) const {
+    const std::optional<std::pair<double, double>> roots = lineRoots(ray);
+    if (!roots) return std::nullopt;
+    const auto [t0, t1] = *roots;
     if (t0 >= tMax || t1 <= 0) return std::nullopt;
     const double t = t0 > 0 ? t0 : t1;
     if (t >= tMax) return std::nullopt;
     return SurfaceCrossing{t, t};
+}
+
+void Sphere::crossLine(const Ray& ray, LineCrossings& crossings) const {
+    const std::optional<std::pair<double, double>> roots = lineRoots(ray);
+    if (!roots) return;
+    crossings.push_back({SurfaceCrossing{roots->first, roots->first}, true});
+    crossings.push_back({SurfaceCrossing{roots->second, roots->second}, false});
 }
 
 Hit Sphere::record(const Ray& ray, const SurfaceCrossing& crossing) const {

@@ -2,6 +2,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry/Shape.h"
@@ -22,6 +23,8 @@ public:
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override;
+    bool isSolid() const override { return true; }
+    void crossLine(const Ray& ray, LineCrossings& crossings) const override;
 
     float area(std::uint32_t primitive) const override;
     std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const override;
@@ -36,6 +39,8 @@ public:
     float radius() const { return radius_; }
 
 private:
+    // Where the ray's line meets the sphere, in increasing order (equal where it touches).
+    std::optional<std::pair<double, double>> lineRoots(const Ray& ray) const;
     // Whether p is inside the sphere or within rounding error of its surface (hit points on the
     // sphere itself, from inside or out): from there the whole sphere is seen, which area
     // sampling covers, while the cone would shrink to the point itself.

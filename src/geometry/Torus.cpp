@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <utility>
 
@@ -72,14 +73,15 @@ Bounds3 Torus::bounds() const {
     return {box.min - slack, box.max + slack};
 }
 
-std::optional<SurfaceCrossing> Torus::cross(const Ray& ray, float tMax) const {
+template <typename Visit>
+void Torus::visitCrossings(const Ray& ray, double tFrom, double tTo, Visit&& visit) const {
     // In the torus's frame scaled by 1 / (R + r), so that the torus fits in the unit sphere
     // whatever its size, along the unit direction: s = t |d| / (R + r).
     const double scale = static_cast<double>(majorRadius_) + minorRadius_;
     const double R = majorRadius_ / scale, r = minorRadius_ / scale;
     const Vec3d fromCenter = Vec3d(ray.origin) - center_, d(ray.direction);
     const double speed = length(d);
-    if (!(speed > 0)) return std::nullopt;
+    if (!(speed > 0)) return;
     const Vec3d origin =
         Vec3d(dot(fromCenter, tangent_), dot(fromCenter, bitangent_), dot(fromCenter, axis_)) /
         scale;
@@ -92,10 +94,10 @@ std::optional<SurfaceCrossing> Torus::cross(const Ray& ray, float tMax) const {
     const double along = dot(origin, direction);
     const double offLineSquared = lengthSquared(origin - along * direction);
     const double reach = 1 + kMargin;
-    if (offLineSquared >= reach * reach) return std::nullopt;
+    if (offLineSquared >= reach * reach) return;
     const double halfChord = std::sqrt(reach * reach - offLineSquared);
-    double sStart = std::max(0.0, -along - halfChord);
-    double sEnd = std::min(-along + halfChord, static_cast<double>(tMax) * speed / scale);
+    double sStart = std::max(tFrom * speed / scale, -along - halfChord);
+    double sEnd = std::min(-along + halfChord, tTo * speed / scale);
     const double halfThickness = r + kMargin;
     if (direction.z != 0) {
         const double s0 = (-halfThickness - origin.z) / direction.z,
@@ -103,9 +105,9 @@ std::optional<SurfaceCrossing> Torus::cross(const Ray& ray, float tMax) const {
         sStart = std::max(sStart, std::min(s0, s1));
         sEnd = std::min(sEnd, std::max(s0, s1));
     } else if (std::abs(origin.z) > halfThickness) {
-        return std::nullopt;
+        return;
     }
-    if (!(sStart < sEnd)) return std::nullopt;
+    if (!(sStart < sEnd)) return;
 
     // The quartic's coefficients from an origin moved to where the ray enters that sphere: of
     // order one, they keep their precision however far the ray started.
@@ -180,13 +182,29 @@ std::optional<SurfaceCrossing> Torus::cross(const Ray& ray, float tMax) const {
                                     : bracketedRoot(distanceAndSlope,
                                                     monotoneBreaks[static_cast<std::size_t>(i - 1)],
                                                     s, distanceBefore < 0);
-            const double t = (sStart + root) * scale / speed;
-            if (t > 0 && t < tMax) return SurfaceCrossing{t, t, 0};
-            return std::nullopt;
+            // Entering where the distance to the tube falls through r.
+            if (visit((sStart + root) * scale / speed, distanceBefore > 0)) return;
         }
         distanceBefore = distance;
     }
-    return std::nullopt;
+}
+
+std::optional<SurfaceCrossing> Torus::cross(const Ray& ray, float tMax) const {
+    std::optional<SurfaceCrossing> nearest;
+    // The first root from t = 0 on is the crossing, if it comes before tMax.
+    visitCrossings(ray, 0, tMax, [&](double t, bool) {
+        if (t > 0 && t < tMax) nearest = SurfaceCrossing{t, t, 0};
+        return true;
+    });
+    return nearest;
+}
+
+void Torus::crossLine(const Ray& ray, LineCrossings& crossings) const {
+    constexpr double kWholeLine = std::numeric_limits<double>::infinity();
+    visitCrossings(ray, -kWholeLine, kWholeLine, [&](double t, bool entering) {
+        crossings.push_back({SurfaceCrossing{t, t, 0}, entering});
+        return false;
+    });
 }
 
 Vec3d Torus::pointAt(double phi, double theta) const {

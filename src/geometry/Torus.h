@@ -28,6 +28,8 @@ public:
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override;
+    bool isSolid() const override { return true; }
+    void crossLine(const Ray& ray, LineCrossings& crossings) const override;
     // A solid gives light to its outside only.
     bool emitsOnBothSides() const override { return false; }
     float area(std::uint32_t primitive) const override;
@@ -37,6 +39,10 @@ public:
     Tessellation tessellate(const TessellationRequest& request) const override;
 
 private:
+    // Calls visit(t, entering) on each crossing with tFrom < t < tTo, in increasing t, until it
+    // returns true.
+    template <typename Visit>
+    void visitCrossings(const Ray& ray, double tFrom, double tTo, Visit&& visit) const;
     // The surface point at angles (phi, theta) and its outward normal, in double.
     Vec3d pointAt(double phi, double theta) const;
     Vec3d normalAt(double phi, double theta) const;

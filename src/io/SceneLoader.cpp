@@ -10,6 +10,7 @@
 #include "accel/Mesh.h"
 #include "geometry/Box.h"
 #include "geometry/Cone.h"
+#include "geometry/Csg.h"
 #include "geometry/Cylinder.h"
 #include "geometry/Disk.h"
 #include "geometry/Instance.h"
@@ -98,8 +99,8 @@ private:
     struct ObjectType {
         const char* name;
         const char* what;  // "a sphere": the object, in messages
-        void (Reader::*load)(const Node& node, const char* what,
-                             const std::optional<Transform>& transform);
+        std::unique_ptr<Shape> (Reader::*load)(const Node& node, const char* what,
+                                               const std::optional<Transform>& transform);
     };
     // An object's keys, read for the class it makes.
     class ObjectParameters;
@@ -125,15 +126,22 @@ private:
     static const Registry<LightType>& lightTypes();
 
     void loadObject(const Node& node);
+    // The shape an element of "objects" (or of a csg's) makes, placed by its transform; null
+    // for one left out with a warning.
+    std::unique_ptr<Shape> readObject(const Node& node);
     // A shape that reads its own keys: ShapeType::keys() and ShapeType::create(parameters,
     // material).
     template <typename ShapeType>
-    void loadShape(const Node& node, const char* what, const std::optional<Transform>& transform);
-    void loadTriangle(const Node& node, const char* what,
-                      const std::optional<Transform>& transform);
-    void loadMeshObject(const Node& node, const char* what,
-                        const std::optional<Transform>& transform);
-    void addShape(std::unique_ptr<Shape> shape, const std::optional<Transform>& transform);
+    std::unique_ptr<Shape> loadShape(const Node& node, const char* what,
+                                     const std::optional<Transform>& transform);
+    std::unique_ptr<Shape> loadTriangle(const Node& node, const char* what,
+                                        const std::optional<Transform>& transform);
+    std::unique_ptr<Shape> loadMeshObject(const Node& node, const char* what,
+                                          const std::optional<Transform>& transform);
+    std::unique_ptr<Shape> loadCsg(const Node& node, const char* what,
+                                   const std::optional<Transform>& transform);
+    static std::unique_ptr<Shape> placed(std::unique_ptr<Shape> shape,
+                                         const std::optional<Transform>& transform);
     std::shared_ptr<const Mesh> loadMesh(const Node& file);
     // Image files are read once, however many materials (and models) use them.
     std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
@@ -247,6 +255,7 @@ const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectType
         {"cylinder", "a cylinder", &Reader::loadShape<Cylinder>},
         {"cone", "a cone", &Reader::loadShape<Cone>},
         {"torus", "a torus", &Reader::loadShape<Torus>},
+        {"csg", "a csg", &Reader::loadCsg},
     };
     return types;
 }
@@ -522,19 +531,24 @@ const Material* SceneLoader::Reader::materialOf(const Node& object) {
 }
 
 void SceneLoader::Reader::loadObject(const Node& node) {
+    if (std::unique_ptr<Shape> shape = readObject(node)) scene_.addShape(std::move(shape));
+}
+
+std::unique_ptr<Shape> SceneLoader::Reader::readObject(const Node& node) {
     requireObject(node, "an object");
     const ObjectType& entry =
         lookUp(objectTypes(), require(node, "type", "an object"), "object type");
     std::optional<Transform> transform;
     if (node.has("transform")) transform = readTransform(node["transform"]);
-    (this->*entry.load)(node, entry.what, transform);
+    return (this->*entry.load)(node, entry.what, transform);
 }
 
 template <typename ShapeType>
-void SceneLoader::Reader::loadShape(const Node& node, const char* what,
-                                    const std::optional<Transform>& transform) {
+std::unique_ptr<Shape> SceneLoader::Reader::loadShape(const Node& node, const char* what,
+                                                      const std::optional<Transform>& transform) {
     checkKeys(node, what, withKeys({"type", "material", "transform"}, ShapeType::keys()));
-    addShape(ShapeType::create(ObjectParameters(*this, node, what), materialOf(node)), transform);
+    return placed(ShapeType::create(ObjectParameters(*this, node, what), materialOf(node)),
+                  transform);
 }
 
 template <typename LightType>
@@ -543,8 +557,8 @@ void SceneLoader::Reader::loadLight(const Node& node, const char* what) {
     scene_.addLight(LightType::create(ObjectParameters(*this, node, what)));
 }
 
-void SceneLoader::Reader::loadTriangle(const Node& node, const char* what,
-                                       const std::optional<Transform>& transform) {
+std::unique_ptr<Shape> SceneLoader::Reader::loadTriangle(
+    const Node& node, const char* what, const std::optional<Transform>& transform) {
     checkKeys(node, what, {"type", "vertices", "normals", "uvs", "material", "transform"});
     const auto readThree = [&](const std::string& key, auto read) {
         const Node list = require(node, key, what);
@@ -563,31 +577,58 @@ void SceneLoader::Reader::loadTriangle(const Node& node, const char* what,
         normals = readThree("normals", [&](const Node& n) { return readDirection(n); });
     if (node.has("uvs")) uvs = readThree("uvs", [&](const Node& n) { return readVec2(n); });
     auto triangle = std::make_unique<Triangle>(vertices, materialOf(node), normals, uvs);
-    if (triangle->area(0) > 0) {
-        ++scene_.statistics().uniqueTriangles;
-        ++scene_.statistics().instancedTriangles;
-        addShape(std::move(triangle), transform);
-    } else
+    if (!(triangle->area(0) > 0)) {
         warn(node["vertices"], "triangle has zero area and is left out");
+        return nullptr;
+    }
+    ++scene_.statistics().uniqueTriangles;
+    ++scene_.statistics().instancedTriangles;
+    return placed(std::move(triangle), transform);
 }
 
-void SceneLoader::Reader::loadMeshObject(const Node& node, const char* what,
-                                         const std::optional<Transform>& transform) {
+std::unique_ptr<Shape> SceneLoader::Reader::loadMeshObject(
+    const Node& node, const char* what, const std::optional<Transform>& transform) {
     checkKeys(node, what, {"type", "file", "material", "transform"});
     std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what));
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
     // Without "material", the model's own materials (from its .mtl) are used.
     const Material* material = node.has("material") ? materialOf(node) : nullptr;
-    scene_.addShape(
-        std::make_unique<Instance>(std::move(mesh), transform.value_or(Transform()), material));
+    return std::make_unique<Instance>(std::move(mesh), transform.value_or(Transform()), material);
 }
 
-void SceneLoader::Reader::addShape(std::unique_ptr<Shape> shape,
-                                   const std::optional<Transform>& transform) {
-    if (transform)
-        scene_.addShape(std::make_unique<Instance>(std::move(shape), *transform));
-    else
-        scene_.addShape(std::move(shape));
+std::unique_ptr<Shape> SceneLoader::Reader::loadCsg(const Node& node, const char* what,
+                                                    const std::optional<Transform>& transform) {
+    checkKeys(node, what, {"type", "operation", "objects", "material", "transform"});
+    const auto operation = static_cast<Csg::Operation>(
+        ObjectParameters(*this, node, what).choice("operation", Csg::operationNames()));
+    const Node objects = require(node, "objects", what);
+    requireArray(objects, "\"objects\"");
+    if (objects.value.size() < 2)
+        fail(objects,
+             "a csg combines at least two objects, got " + std::to_string(objects.value.size()));
+    // The csg's material is that of the children that name none.
+    const Material* outerDefault = defaultMaterial_;
+    const Material* material = materialOf(node);
+    defaultMaterial_ = material;
+    std::vector<std::unique_ptr<Shape>> children;
+    for (std::size_t i = 0; i < objects.value.size(); ++i) {
+        const Node child = objects.at(i);
+        std::unique_ptr<Shape> shape = readObject(child);
+        if (!shape || !shape->isSolid())
+            fail(child, std::string(lookUp(objectTypes(), child["type"], "object type").what) +
+                            " here is not a solid (a closed surface): a csg combines spheres, " +
+                            "boxes, closed cylinders and cones, tori, csgs and meshes of closed " +
+                            "models");
+        children.push_back(std::move(shape));
+    }
+    defaultMaterial_ = outerDefault;
+    return placed(std::make_unique<Csg>(operation, std::move(children), material), transform);
+}
+
+std::unique_ptr<Shape> SceneLoader::Reader::placed(std::unique_ptr<Shape> shape,
+                                                   const std::optional<Transform>& transform) {
+    if (!transform) return shape;
+    return std::make_unique<Instance>(std::move(shape), *transform);
 }
 
 std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {

@@ -1,0 +1,218 @@
+#include "geometry/Csg.h"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace lancer {
+
+namespace {
+
+// Crossings of different children closer than this, relative to the distances involved, are
+// one event: the rounding of where a face shared by two children lies, seen from each.
+constexpr double kCoincident = 2e-6;
+
+// How many times a facet across the edge of the result's surface is halved (into four) before
+// its centre decides.
+constexpr int kEdgeRefinement = 3;
+
+struct ChildCrossing {
+    LineCrossing at;
+    std::size_t child;
+};
+
+}  // namespace
+
+Csg::Csg(Operation operation, std::vector<std::unique_ptr<Shape>> children,
+         const Material* material)
+    : Shape(material), operation_(operation), children_(std::move(children)) {
+    firstPrimitive_.push_back(0);
+    for (const auto& child : children_)
+        firstPrimitive_.push_back(firstPrimitive_.back() + child->primitiveCount());
+    bounds_ = children_.front()->bounds();
+    for (std::size_t k = 1; k < children_.size(); ++k) {
+        const Bounds3 b = children_[k]->bounds();
+        if (operation_ == Operation::kUnion) bounds_ = merge(bounds_, b);
+        if (operation_ == Operation::kIntersection)
+            bounds_ = {max(bounds_.min, b.min), min(bounds_.max, b.max)};
+    }
+    // An empty intersection hits nothing; any box will do.
+    if (bounds_.isEmpty()) bounds_ = children_.front()->bounds();
+}
+
+const std::vector<std::string>& Csg::operationNames() {
+    // In the order of Operation.
+    static const std::vector<std::string> names{"union", "intersection", "difference"};
+    return names;
+}
+
+std::size_t Csg::childOf(std::uint32_t primitive) const {
+    const auto after = std::upper_bound(firstPrimitive_.begin(), firstPrimitive_.end(), primitive);
+    return static_cast<std::size_t>(after - firstPrimitive_.begin()) - 1;
+}
+
+bool Csg::inResult(const std::vector<bool>& insideChild) const {
+    switch (operation_) {
+        case Operation::kUnion:
+            return std::find(insideChild.begin(), insideChild.end(), true) != insideChild.end();
+        case Operation::kIntersection:
+            return std::find(insideChild.begin(), insideChild.end(), false) == insideChild.end();
+        case Operation::kDifference:
+            return insideChild.front() &&
+                   std::find(insideChild.begin() + 1, insideChild.end(), true) == insideChild.end();
+    }
+    return false;
+}
+
+bool Csg::onResultSurface(std::size_t k, const Vec3& p) const {
+    std::vector<bool> inside(children_.size());
+    for (std::size_t i = 0; i < children_.size(); ++i)
+        if (i != k) inside[i] = children_[i]->contains(p);
+    inside[k] = true;
+    const bool withK = inResult(inside);
+    inside[k] = false;
+    return withK != inResult(inside);
+}
+
+void Csg::resultCrossings(const Ray& ray, double tStop, LineCrossings& crossings) const {
+    std::vector<ChildCrossing> events;
+    LineCrossings ofChild;
+    for (std::size_t k = 0; k < children_.size(); ++k) {
+        ofChild.clear();
+        children_[k]->crossLine(ray, ofChild);
+        // Nothing of an intersection, or of a difference, lies off its first child.
+        if (ofChild.empty() && (operation_ == Operation::kIntersection ||
+                                (operation_ == Operation::kDifference && k == 0)))
+            return;
+        for (const LineCrossing& c : ofChild)
+            events.push_back({c, k});
+    }
+    std::stable_sort(events.begin(), events.end(),
+                     [](const ChildCrossing& a, const ChildCrossing& b) {
+                         return a.at.crossing.t < b.at.crossing.t;
+                     });
+
+    // The rounding of a crossing's t grows with the distances from the origin it was found from.
+    const double speed = length(Vec3d(ray.direction));
+    const double reach =
+        (static_cast<double>(maxComponent(abs(ray.origin))) + length(bounds_.diagonal())) /
+        (speed > 0 ? speed : 1);
+    std::vector<int> depth(children_.size(), 0);
+    std::vector<bool> inside(children_.size(), false);
+    bool inBefore = false;  // at t = -infinity, outside every child
+    for (std::size_t first = 0; first < events.size();) {
+        const double t0 = events[first].at.crossing.t;
+        const double tolerance = kCoincident * (std::abs(t0) + reach);
+        std::size_t end = first;
+        for (; end < events.size() && events[end].at.crossing.t - t0 <= tolerance; ++end) {
+            const ChildCrossing& e = events[end];
+            depth[e.child] += e.at.entering ? 1 : -1;
+            inside[e.child] = depth[e.child] > 0;
+        }
+        const bool inAfter = inResult(inside);
+        if (inAfter != inBefore) {
+            // The surface is that of a child whose own step goes the result's way (of those in
+            // the event: coincident faces of the same side give the same point).
+            std::size_t chosen = first;
+            for (std::size_t i = first; i < end; ++i)
+                if ((events[i].at.entering != isCarving(events[i].child)) == inAfter) {
+                    chosen = i;
+                    break;
+                }
+            LineCrossing c = events[chosen].at;
+            c.crossing.primitive += firstPrimitive_[events[chosen].child];
+            c.entering = inAfter;
+            crossings.push_back(c);
+            if (c.crossing.t > tStop) return;
+            inBefore = inAfter;
+        }
+        first = end;
+    }
+}
+
+std::optional<SurfaceCrossing> Csg::cross(const Ray& ray, float tMax) const {
+    LineCrossings crossings;
+    resultCrossings(ray, 0, crossings);
+    if (crossings.empty()) return std::nullopt;
+    const SurfaceCrossing& last = crossings.back().crossing;
+    if (last.t > 0 && last.t < tMax) return last;
+    return std::nullopt;
+}
+
+void Csg::crossLine(const Ray& ray, LineCrossings& crossings) const {
+    resultCrossings(ray, kInfinity, crossings);
+}
+
+Hit Csg::record(const Ray& ray, const SurfaceCrossing& crossing) const {
+    const std::size_t k = childOf(crossing.primitive);
+    SurfaceCrossing own = crossing;
+    own.primitive -= firstPrimitive_[k];
+    Hit hit = children_[k]->record(ray, own);
+    if (isCarving(k)) {
+        hit.ng = -hit.ng;
+        hit.ns = -hit.ns;
+    }
+    hit.shape = this;
+    hit.primitive = crossing.primitive;
+    if (!hit.material) hit.material = material();
+    return hit;
+}
+
+const Material* Csg::primitiveMaterial(std::uint32_t primitive) const {
+    const std::size_t k = childOf(primitive);
+    const Material* own = children_[k]->primitiveMaterial(primitive - firstPrimitive_[k]);
+    return own ? own : material();
+}
+
+float Csg::area(std::uint32_t primitive) const {
+    const std::size_t k = childOf(primitive);
+    return children_[k]->area(primitive - firstPrimitive_[k]);
+}
+
+std::optional<ShapeSample> Csg::sample(std::uint32_t primitive, const Vec2& u) const {
+    const std::size_t k = childOf(primitive);
+    std::optional<ShapeSample> s = children_[k]->sample(primitive - firstPrimitive_[k], u);
+    if (!s || !onResultSurface(k, s->p)) return std::nullopt;
+    if (isCarving(k)) s->n = -s->n;
+    return s;
+}
+
+float Csg::areaPdf(std::uint32_t primitive, const Hit& onSurface) const {
+    const std::size_t k = childOf(primitive);
+    return children_[k]->areaPdf(primitive - firstPrimitive_[k], onSurface);
+}
+
+void Csg::addVisibleParts(std::size_t k, const Tessellation::Facet& facet, int refinements,
+                          std::vector<Tessellation::Facet>& facets) const {
+    const auto& [a, b, c] = facet.corners;
+    const bool centreVisible = onResultSurface(k, (a + b + c) / 3.0f);
+    const int visibleCorners =
+        onResultSurface(k, a) + onResultSurface(k, b) + onResultSurface(k, c);
+    const bool across = visibleCorners != (centreVisible ? 3 : 0);
+    if (!across || refinements == 0) {
+        if (centreVisible) facets.push_back(facet);
+        return;
+    }
+    const Vec3 ab = 0.5f * (a + b), bc = 0.5f * (b + c), ca = 0.5f * (c + a);
+    for (const std::array<Vec3, 3>& corners : {std::array{a, ab, ca}, std::array{ab, b, bc},
+                                               std::array{ca, bc, c}, std::array{ab, bc, ca}})
+        addVisibleParts(k, {corners, facet.primitive}, refinements - 1, facets);
+}
+
+Tessellation Csg::tessellate(const TessellationRequest& request) const {
+    Tessellation result;
+    for (std::size_t k = 0; k < children_.size(); ++k) {
+        Tessellation piece = children_[k]->tessellate(request);
+        result.curved = result.curved || piece.curved;
+        result.probeDistance = std::max(result.probeDistance, piece.probeDistance);
+        for (Tessellation::Facet& facet : piece.facets) {
+            facet.primitive += firstPrimitive_[k];
+            // A carved surface's front faces into the child that carves it.
+            if (isCarving(k)) std::swap(facet.corners[1], facet.corners[2]);
+            addVisibleParts(k, facet, kEdgeRefinement, result.facets);
+        }
+    }
+    return result;
+}
+
+}  // namespace lancer
