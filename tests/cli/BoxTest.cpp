@@ -24,31 +24,8 @@ constexpr double kKd = 0.5;
 constexpr double kRadiance = 2;
 const Vec3d kLampMin(-0.5, 1, -0.5), kLampMax(0.5, 1.5, 0.5);
 
-// The corners of the face of [lo, hi] at side `atMax` of `axis`.
-std::vector<Vec3d> faceCorners(const Vec3d& lo, const Vec3d& hi, int axis, bool atMax) {
-    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
-    std::vector<Vec3d> corners;
-    for (const auto& [ua, ub] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
-        Vec3d c;
-        c[axis] = atMax ? hi[axis] : lo[axis];
-        c[a] = ua ? hi[a] : lo[a];
-        c[b] = ub ? hi[b] : lo[b];
-        corners.push_back(c);
-    }
-    return corners;
-}
-
 double lampIrradiance(const Vec3d& p) {
-    double E = 0;
-    for (int axis = 0; axis < 3; ++axis)
-        for (const bool atMax : {false, true}) {
-            const double plane = atMax ? kLampMax[axis] : kLampMin[axis];
-            const bool outside = atMax ? p[axis] > plane : p[axis] < plane;
-            if (outside)
-                E += kRadiance * polygonIrradiance(p, Vec3d(0, 1, 0),
-                                                   faceCorners(kLampMin, kLampMax, axis, atMax));
-        }
-    return E;
+    return kRadiance * boxIrradiance(p, Vec3d(0, 1, 0), kLampMin, kLampMax);
 }
 
 // Looking straight down at the floor from inside the lamp's shadow-free side: 9 x 9 pixels over

@@ -95,6 +95,26 @@ double distanceToLine(const Vec3d& point, const RayD& ray) {
     return length(toPoint - dot(toPoint, ray.direction) * ray.direction);
 }
 
+double boxIrradiance(const Vec3d& p, const Vec3d& n, const Vec3d& lo, const Vec3d& hi) {
+    double E = 0;
+    for (int axis = 0; axis < 3; ++axis)
+        for (const bool atMax : {false, true}) {
+            const double plane = atMax ? hi[axis] : lo[axis];
+            if (atMax ? p[axis] <= plane : p[axis] >= plane) continue;  // behind the face
+            const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+            std::vector<Vec3d> corners;
+            for (const auto& [ua, ub] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+                Vec3d c;
+                c[axis] = plane;
+                c[a] = ua ? hi[a] : lo[a];
+                c[b] = ub ? hi[b] : lo[b];
+                corners.push_back(c);
+            }
+            E += polygonIrradiance(p, n, corners);
+        }
+    return E;
+}
+
 nlohmann::json emitterOverFloor(const nlohmann::json& floor, const nlohmann::json& lamp,
                                 const CameraModel& camera, const std::string& integrator, int spp) {
     nlohmann::json scene = nlohmann::json::parse(R"({

@@ -54,6 +54,10 @@ Incident incidentLight(const nlohmann::json& light, const Vec3d& p);
 // theta_i the angle between v_i and v_i+1. The polygon must lie wholly above p's tangent plane.
 double polygonIrradiance(const Vec3d& p, const Vec3d& n, const std::vector<Vec3d>& vertices);
 
+// The irradiance that the box [lo, hi] of radiance 1 gives a surface at p with unit normal n,
+// from the faces whose outer side p is on (which must lie wholly above p's tangent plane).
+double boxIrradiance(const Vec3d& p, const Vec3d& n, const Vec3d& lo, const Vec3d& hi);
+
 // The pinhole camera of the contract: w = normalize(position - look_at), u = normalize(up x w),
 // v = w x u, and the ray through image point (px, py) has direction
 // normalize((2 px / width - 1) tan_w u + (1 - 2 py / height) tan_h v - w).
