@@ -16,10 +16,33 @@ constexpr double kCoincident = 2e-6;
 // its centre decides.
 constexpr int kEdgeRefinement = 3;
 
-struct ChildCrossing {
-    LineCrossing at;
-    std::size_t child;
+// What a sweep along a line needs, kept from ray to ray by each thread: one set per level of
+// nesting, since a child that is a CSG sweeps while its parent's sweep is under way.
+struct Sweep {
+    LineCrossings events;
+    std::vector<int> depth;
+    std::vector<bool> inside;
 };
+
+class SweepLease {
+public:
+    SweepLease() {
+        if (level_ == pool_.size()) pool_.push_back(std::make_unique<Sweep>());
+        sweep_ = pool_[level_++].get();
+    }
+    ~SweepLease() { --level_; }
+    SweepLease(const SweepLease&) = delete;
+    SweepLease& operator=(const SweepLease&) = delete;
+    Sweep& operator*() const { return *sweep_; }
+
+private:
+    static thread_local std::vector<std::unique_ptr<Sweep>> pool_;
+    static thread_local std::size_t level_;
+    Sweep* sweep_;
+};
+
+thread_local std::vector<std::unique_ptr<Sweep>> SweepLease::pool_;
+thread_local std::size_t SweepLease::level_ = 0;
 
 }  // namespace
 
@@ -75,55 +98,57 @@ bool Csg::onResultSurface(std::size_t k, const Vec3& p) const {
 }
 
 void Csg::resultCrossings(const Ray& ray, double tStop, LineCrossings& crossings) const {
-    std::vector<ChildCrossing> events;
-    LineCrossings ofChild;
+    const SweepLease lease;
+    Sweep& sweep = *lease;
+    // The children's crossings, numbered as the result's primitives (which tells their child).
+    LineCrossings& events = sweep.events;
+    events.clear();
     for (std::size_t k = 0; k < children_.size(); ++k) {
-        ofChild.clear();
-        children_[k]->crossLine(ray, ofChild);
+        const std::size_t first = events.size();
+        children_[k]->crossLine(ray, events);
         // Nothing of an intersection, or of a difference, lies off its first child.
-        if (ofChild.empty() && (operation_ == Operation::kIntersection ||
-                                (operation_ == Operation::kDifference && k == 0)))
+        if (events.size() == first && (operation_ == Operation::kIntersection ||
+                                       (operation_ == Operation::kDifference && k == 0)))
             return;
-        for (const LineCrossing& c : ofChild)
-            events.push_back({c, k});
+        for (std::size_t i = first; i < events.size(); ++i)
+            events[i].crossing.primitive += firstPrimitive_[k];
     }
-    std::stable_sort(events.begin(), events.end(),
-                     [](const ChildCrossing& a, const ChildCrossing& b) {
-                         return a.at.crossing.t < b.at.crossing.t;
-                     });
+    // In order of t; at equal t, in the children's order.
+    std::sort(events.begin(), events.end(), [](const LineCrossing& a, const LineCrossing& b) {
+        return a.crossing.t < b.crossing.t ||
+               (a.crossing.t == b.crossing.t && a.crossing.primitive < b.crossing.primitive);
+    });
 
     // The rounding of a crossing's t grows with the distances from the origin it was found from.
     const double speed = length(Vec3d(ray.direction));
     const double reach =
         (static_cast<double>(maxComponent(abs(ray.origin))) + length(bounds_.diagonal())) /
         (speed > 0 ? speed : 1);
-    std::vector<int> depth(children_.size(), 0);
-    std::vector<bool> inside(children_.size(), false);
+    sweep.depth.assign(children_.size(), 0);
+    sweep.inside.assign(children_.size(), false);
     bool inBefore = false;  // at t = -infinity, outside every child
     for (std::size_t first = 0; first < events.size();) {
-        const double t0 = events[first].at.crossing.t;
+        const double t0 = events[first].crossing.t;
         const double tolerance = kCoincident * (std::abs(t0) + reach);
         std::size_t end = first;
-        for (; end < events.size() && events[end].at.crossing.t - t0 <= tolerance; ++end) {
-            const ChildCrossing& e = events[end];
-            depth[e.child] += e.at.entering ? 1 : -1;
-            inside[e.child] = depth[e.child] > 0;
+        for (; end < events.size() && events[end].crossing.t - t0 <= tolerance; ++end) {
+            const std::size_t k = childOf(events[end].crossing.primitive);
+            sweep.depth[k] += events[end].entering ? 1 : -1;
+            sweep.inside[k] = sweep.depth[k] > 0;
         }
-        const bool inAfter = inResult(inside);
+        const bool inAfter = inResult(sweep.inside);
         if (inAfter != inBefore) {
             // The surface is that of a child whose own step goes the result's way (of those in
             // the event: coincident faces of the same side give the same point).
             std::size_t chosen = first;
             for (std::size_t i = first; i < end; ++i)
-                if ((events[i].at.entering != isCarving(events[i].child)) == inAfter) {
+                if ((events[i].entering != isCarving(childOf(events[i].crossing.primitive))) ==
+                    inAfter) {
                     chosen = i;
                     break;
                 }
-            LineCrossing c = events[chosen].at;
-            c.crossing.primitive += firstPrimitive_[events[chosen].child];
-            c.entering = inAfter;
-            crossings.push_back(c);
-            if (c.crossing.t > tStop) return;
+            crossings.push_back({events[chosen].crossing, inAfter});
+            if (events[chosen].crossing.t > tStop) return;
             inBefore = inAfter;
         }
         first = end;
@@ -131,7 +156,8 @@ void Csg::resultCrossings(const Ray& ray, double tStop, LineCrossings& crossings
 }
 
 std::optional<SurfaceCrossing> Csg::cross(const Ray& ray, float tMax) const {
-    LineCrossings crossings;
+    thread_local LineCrossings crossings;
+    crossings.clear();
     resultCrossings(ray, 0, crossings);
     if (crossings.empty()) return std::nullopt;
     const SurfaceCrossing& last = crossings.back().crossing;

@@ -8,7 +8,8 @@ bool Shape::contains(const Vec3& p) const {
     // Along a direction unlikely to run along an edge or a face of a modelled solid; inside
     // where more crossings behind p enter than leave.
     const Ray line{p, Vec3(0.5773f, 0.6019f, 0.5519f)};
-    LineCrossings crossings;
+    thread_local LineCrossings crossings;  // (crossLine never asks contains)
+    crossings.clear();
     crossLine(line, crossings);
     int depth = 0;
     for (const LineCrossing& c : crossings) {

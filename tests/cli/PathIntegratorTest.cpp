@@ -99,6 +99,21 @@ json boxFurnace(const json& material) {
     return scene;
 }
 
+// The cavity that two overlapping spheres carve in a box, a csg: seen from inside, its surface is
+// the spheres' carved pieces, whose fronts (out of the result) face the eye.
+json csgCavityFurnace(const json& material) {
+    json scene = pathScene(8, 8, 1024, 200);
+    placeCamera(scene, {0.1, -0.2, 0.3});
+    scene["materials"] = {{"furnace", material}};
+    scene["objects"].push_back(json::parse(R"({
+      "type": "csg", "operation": "difference", "material": "furnace", "objects": [
+        { "type": "box", "min": [-2, -2, -2], "max": [2, 2, 2] },
+        { "type": "csg", "operation": "union", "objects": [
+          { "type": "sphere", "center": [-0.3, 0, 0], "radius": 1 },
+          { "type": "sphere", "center": [0.5, 0.2, 0], "radius": 0.8 } ] } ] })"));
+    return scene;
+}
+
 // Radiance Le / (1 - rho) per channel.
 Radiance furnaceRadiance(const Radiance& le, const Radiance& rho) {
     return {le.r / (1 - rho.r), le.g / (1 - rho.g), le.b / (1 - rho.b)};
@@ -150,6 +165,11 @@ INSTANTIATE_TEST_SUITE_P(
                     FurnaceCase{"SphereDiffuseAndMirror", sphereFurnace(kFurnaceDiffuseAndMirror),
                                 furnaceRadiance({1.0, 0.5, 0.25}, {0.6, 0.7, 0.5})},
                     FurnaceCase{"BoxDiffuseAndMirror", boxFurnace(kFurnaceDiffuseAndMirror),
+                                furnaceRadiance({1.0, 0.5, 0.25}, {0.6, 0.7, 0.5})},
+                    FurnaceCase{"CsgCavity", csgCavityFurnace(kFurnaceDiffuse),
+                                furnaceRadiance({1.0, 0.5, 0.25}, {0.3, 0.5, 0.7})},
+                    FurnaceCase{"CsgCavityDiffuseAndMirror",
+                                csgCavityFurnace(kFurnaceDiffuseAndMirror),
                                 furnaceRadiance({1.0, 0.5, 0.25}, {0.6, 0.7, 0.5})}),
     CaseName());
 

@@ -18,6 +18,7 @@
 #include "geometry/Instance.h"
 #include "geometry/Sphere.h"
 #include "materials/BlinnPhongMaterial.h"
+#include "materials/Optics.h"
 #include "math/Transform.h"
 
 namespace lancer {
@@ -68,6 +69,82 @@ TEST(Csg, ALensIsEnteredOnceAndLeftOnce) {
     // The rim, where the spheres meet: the circle of radius sqrt(3)/2 at z = 0.
     EXPECT_TRUE(shape->intersect({Vec3(0.85f, 0, -3), Vec3(0, 0, 1)}, kInfinity));
     EXPECT_FALSE(shape->intersect({Vec3(0.88f, 0, -3), Vec3(0, 0, 1)}, kInfinity));
+}
+
+TEST(Csg, EveryArrangementOfTwoChildrenAlongALineGivesTheSetOperationsCrossings) {
+    // Two boxes along x, [a0, a1] and [b0, b1] with ends among 0..3 (touching, nested, equal,
+    // apart), crossed along x: the result's crossings are where the unit cells between the
+    // integers change from out to in, or back.
+    const Ray line{Vec3(-10, 0.3f, -0.2f), Vec3(1, 0, 0)};
+    int arrangements = 0;
+    for (const Csg::Operation operation :
+         {Csg::Operation::kUnion, Csg::Operation::kIntersection, Csg::Operation::kDifference})
+        for (int a0 = 0; a0 < 4; ++a0)
+            for (int a1 = a0 + 1; a1 < 4; ++a1)
+                for (int b0 = 0; b0 < 4; ++b0)
+                    for (int b1 = b0 + 1; b1 < 4; ++b1) {
+                        const auto box = [](int lo, int hi) {
+                            return std::make_unique<Box>(Vec3(static_cast<float>(lo), -1, -1),
+                                                         Vec3(static_cast<float>(hi), 1, 1),
+                                                         &kOuter);
+                        };
+                        const auto shape = combine(operation, box(a0, a1), box(b0, b1));
+                        const auto inCell = [&](int k) {  // the cell [k, k + 1]
+                            const bool inA = a0 <= k && k < a1, inB = b0 <= k && k < b1;
+                            switch (operation) {
+                                case Csg::Operation::kUnion:
+                                    return inA || inB;
+                                case Csg::Operation::kIntersection:
+                                    return inA && inB;
+                                case Csg::Operation::kDifference:
+                                    return inA && !inB;
+                            }
+                            return false;
+                        };
+                        LineCrossings expected;
+                        for (int x = 0; x <= 3; ++x)
+                            if (inCell(x - 1) != inCell(x))
+                                expected.push_back(
+                                    {SurfaceCrossing{x + 10.0, x + 10.0}, inCell(x)});
+                        LineCrossings crossings;
+                        shape->crossLine(line, crossings);
+                        ASSERT_EQ(crossings.size(), expected.size())
+                            << static_cast<int>(operation) << ": [" << a0 << ", " << a1 << "], ["
+                            << b0 << ", " << b1 << "]";
+                        for (std::size_t k = 0; k < crossings.size(); ++k) {
+                            EXPECT_EQ(crossings[k].crossing.t, expected[k].crossing.t);
+                            EXPECT_EQ(crossings[k].entering, expected[k].entering);
+                        }
+                        ++arrangements;
+                    }
+    EXPECT_EQ(arrangements, 3 * 6 * 6);
+}
+
+TEST(Csg, ALensFocusesParaxialRaysWhereTheThickLensFormulaSays) {
+    // Unit spheres 1 apart, n = 1.5: R1 = 1, R2 = -1, thickness 1, so 1 / f = (n - 1) (2 -
+    // (n - 1) / n) gives f = 1.2, and the back focal length f (1 - (n - 1) / n) = 0.8 puts the
+    // focus at z = 0.5 + 0.8 = 1.3.
+    const auto shape = lens();
+    constexpr float kIor = 1.5f;
+    for (const float height : {0.005f, 0.01f, 0.02f}) {
+        Ray ray{Vec3(height, 0, -3), Vec3(0, 0, 1)};
+        const std::optional<Hit> entry = shape->intersect(ray, kInfinity);
+        ASSERT_TRUE(entry);
+        ASSERT_TRUE(entry->frontFace(ray));
+        const std::optional<Vec3> inside = refract(-ray.direction, entry->ng, kIor);
+        ASSERT_TRUE(inside);
+        ray = entry->spawnRay(*inside);
+        const std::optional<Hit> exit = shape->intersect(ray, kInfinity);
+        ASSERT_TRUE(exit);
+        ASSERT_FALSE(exit->frontFace(ray)) << "the second surface is the exit";
+        const std::optional<Vec3> out = refract(-ray.direction, -exit->ng, 1 / kIor);
+        ASSERT_TRUE(out);
+        ray = exit->spawnRay(*out);
+        EXPECT_FALSE(shape->intersect(ray, kInfinity)) << "nothing after the exit";
+        // Where the ray crosses the axis (x = 0).
+        const float focus = ray.origin.z - ray.origin.x / ray.direction.x * ray.direction.z;
+        EXPECT_NEAR(focus, 1.3f, 0.002f) << "at height " << height;
+    }
 }
 
 TEST(Csg, ABoxWithAHoleShowsTheHolesWallFacingIntoTheHole) {
