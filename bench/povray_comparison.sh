@@ -1,12 +1,18 @@
 #!/usr/bin/env bash
-# lancer vs POV-Ray 3.7 on the Whitted scene: scenes/whitted.json (lancer) and bench/whitted.pov
-# (the same scene for POV-Ray, see its header), 640x480, 16 samples per pixel, depth 5, rendered
-# with 1 and 2 threads. Prints a Markdown report: median times and the ratios POV-Ray / lancer.
+# lancer vs POV-Ray 3.7 on one scene written for both, rendered with 1 and 2 threads. Prints a
+# Markdown report: median times and the ratios POV-Ray / lancer.
+#   whitted: scenes/whitted.json (lancer) and bench/whitted.pov (the same scene for POV-Ray, see
+#            its header), 640x480, 16 samples per pixel, depth 5
+#   csg:     scenes/csg-whitted.json and bench/csg.pov (POV-Ray's union, merge, intersection and
+#            difference of boxes, spheres, cylinders, cones, tori), 640x400, 16 spp, depth 8
 #
-# Usage: bench/povray_comparison.sh [--runs N] [--no-adc0] [--images DIR] [--max-wait S]
+# Usage: bench/povray_comparison.sh [--scene whitted|csg] [--runs N] [--no-adc0] [--images DIR]
+#                                   [--max-wait S]
+#   --scene S     the scene to compare: whitted (the default) or csg
 #   --runs N      timed runs of each configuration (default 5), after one untimed warm-up run
 #   --no-adc0     skip the extra POV-Ray configuration with adc_bailout 0 (same ray tree as lancer)
-#   --images DIR  also write half-size copies of both renders to DIR (e.g. docs/bench)
+#   --images DIR  also write half-size copies of both renders to DIR (e.g. docs/bench), as
+#                 SCENE-lancer.png and SCENE-povray.png (needs ImageMagick's convert)
 #   --max-wait S  before each run, wait up to S seconds (default 120) for an idle CPU
 #
 # The runs of the different configurations are interleaved (lancer 1T, lancer 2T, POV 1T, ...,
@@ -14,17 +20,19 @@
 # alike. Exit status: 0 on success, 1 if anything failed (build, a render, a missing image).
 set -euo pipefail
 
+scene_name=whitted
 runs=5
 adc0=1
 images_dir=""
 max_wait=120
 while (($#)); do
     case $1 in
+        --scene) scene_name=${2:?--scene needs whitted or csg}; shift 2 ;;
         --runs) runs=${2:?--runs needs a number}; shift 2 ;;
         --no-adc0) adc0=0; shift ;;
         --images) images_dir=${2:?--images needs a folder}; shift 2 ;;
         --max-wait) max_wait=${2:?--max-wait needs a number of seconds}; shift 2 ;;
-        -h|--help) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+        -h|--help) sed -n '2,20p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
         *) echo "povray_comparison.sh: unknown option '$1' (see --help)" >&2; exit 1 ;;
     esac
 done
@@ -33,6 +41,15 @@ fail() { echo "povray_comparison.sh: error: $*" >&2; exit 1; }
 
 [[ $runs =~ ^[1-9][0-9]*$ ]] || fail "--runs must be a positive integer"
 [[ $max_wait =~ ^[0-9]+$ ]] || fail "--max-wait must be a number of seconds"
+# Each scene: the lancer scene, the same scene for POV-Ray, the image size (the .pov files take
+# theirs from the command line), a title for the report.
+case $scene_name in
+    whitted) scene=scenes/whitted.json pov=bench/whitted.pov width=640 height=480
+             title="Whitted scene" ;;
+    csg)     scene=scenes/csg-whitted.json pov=bench/csg.pov width=640 height=400
+             title="CSG scene" ;;
+    *) fail "--scene must be whitted or csg, not '$scene_name'" ;;
+esac
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
@@ -49,12 +66,10 @@ out=$(mktemp -d /tmp/lancer-povray-bench.XXXXXX)   # POV-Ray may only write in .
 # Time a private copy, so that a rebuild of bin/lancer during the benchmark cannot mix versions.
 cp bin/lancer "$out/lancer"
 lancer_tree=$(git describe --always --dirty 2>/dev/null || echo "not a git checkout")
-scene=scenes/whitted.json
-pov=bench/whitted.pov
-# POV-Ray: 640x480; +AM1 +A0.0 +R4 +J1.0 = every pixel supersampled on a jittered 4x4 grid (16
-# samples per pixel, see bench/whitted.pov); an sRGB PNG like lancer's; -D no display, -P no
-# pause. Its statistics on stderr hold the trace time read below.
-pov_args=(+I"$pov" +W640 +H480 +AM1 +A0.0 +R4 +J1.0 File_Gamma=sRGB +FN -D -P)
+# POV-Ray: the scene's size; +AM1 +A0.0 +R4 +J1.0 = every pixel supersampled on a jittered 4x4
+# grid (16 samples per pixel, see bench/whitted.pov); an sRGB PNG like lancer's; -D no display,
+# -P no pause. Its statistics on stderr hold the trace time read below.
+pov_args=(+I"$pov" +W"$width" +H"$height" +AM1 +A0.0 +R4 +J1.0 File_Gamma=sRGB +FN -D -P)
 
 configs=(lancer-1 lancer-2 povray-1 povray-2)
 if ((adc0)); then configs+=(povray-adc0-1 povray-adc0-2); fi
@@ -118,7 +133,7 @@ one_run() { # name run-index (0 = warm-up, not recorded)
     fi
 }
 
-echo "lancer vs POV-Ray: $runs timed runs per configuration (+1 warm-up), images and logs in $out" >&2
+echo "lancer vs POV-Ray, $scene_name scene: $runs timed runs per configuration (+1 warm-up), images and logs in $out" >&2
 load_before=$(cut -d' ' -f1-3 /proc/loadavg)
 for ((i = 0; i <= runs; i++)); do
     for name in "${configs[@]}"; do
@@ -132,16 +147,18 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg)
 if [[ -n $images_dir ]]; then
     command -v convert >/dev/null || fail "--images needs ImageMagick's convert"
     mkdir -p "$images_dir"
-    convert "$out/lancer-2.png" -resize 50% "$images_dir/whitted-lancer.png"
-    convert "$out/povray-2.png" -resize 50% "$images_dir/whitted-povray.png"
-    echo "wrote $images_dir/whitted-lancer.png and $images_dir/whitted-povray.png" >&2
+    convert "$out/lancer-2.png" -resize 50% "$images_dir/$scene_name-lancer.png"
+    convert "$out/povray-2.png" -resize 50% "$images_dir/$scene_name-povray.png"
+    echo "wrote $images_dir/$scene_name-lancer.png and $images_dir/$scene_name-povray.png" >&2
 fi
 
 model=$(lscpu | sed -n 's/^Model name: *//p' | head -1)
 options="--runs $runs --max-wait $max_wait"
+[[ $scene_name == whitted ]] || options="--scene $scene_name $options"
 ((adc0)) || options+=" --no-adc0"
-echo "## Whitted scene, lancer vs POV-Ray 3.7"
+echo "## $title, lancer vs POV-Ray 3.7"
 echo
+echo "- scene: $scene (lancer) and $pov (POV-Ray), ${width}x$height, 16 samples per pixel"
 echo "- date: $(date -u '+%Y-%m-%d %H:%M UTC')"
 echo "- machine: ${model:-unknown CPU}, $(nproc) CPUs, $(free -g | awk '/^Mem:/ {print $2}') GiB RAM"
 echo "- command: \`bench/povray_comparison.sh $options\`"
@@ -151,7 +168,8 @@ echo "- $runs timed runs of each configuration after one warm-up, interleaved; l
 echo "  $load_before, after $load_after; runs that started on a busy CPU (waited $max_wait s): $busy_starts"
 echo "- lancer: $(grep -oE '[0-9.]+ M rays' "$out/lancer-2.$runs.log" | tail -1) (camera, reflected, refracted and shadow rays)"
 echo "- POV-Ray (last 2-thread run):" \
-    "$(grep -oE 'Smpls/Pxl: *[0-9.]+' "$out/povray-2.$runs.log" | grep -oE '[0-9.]+$') supersamples per pixel" \
+    "$(grep -oE 'Samples: *[0-9]+' "$out/povray-2.$runs.log" | grep -oE '[0-9]+$' | awk -v p=$((width * height)) '{print $1 / p}')" \
+    "supersamples per pixel of the image" \
     "(plus the centre ray), $(grep -oE '^Rays: *[0-9]+' "$out/povray-2.$runs.log" | grep -oE '[0-9]+$') rays" \
     "(shadow rays not counted), max trace level reached $(grep -oE 'Max Level: *[0-9/]+' "$out/povray-2.$runs.log" | grep -oE '[0-9/]+$')"
 echo
