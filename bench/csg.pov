@@ -36,7 +36,7 @@
 //
 // * Lights. Point lights with E = I / d^2: colour I / (2 f^2), fade_distance f = 0.01,
 //   fade_power 2 (POV-Ray's 2 / (1 + (d/f)^2) is then I / d^2 to a relative error f^2 / d^2,
-//   below 1e-5 here: every surface is more than 3 units from both lights).
+//   1.1e-5 at most here: no surface is nearer than 3 units to either light).
 //
 // * Checker floor (even 0.7, odd 0.45, scale 1, on the plane's uv = world (x, z)). POV-Ray's
 //   checker gives its first colour where floor(x) + floor(y) + floor(z) is even, y = 0 on the
