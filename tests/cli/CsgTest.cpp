@@ -266,5 +266,45 @@ TEST(CliCsg, AnEmissiveCsgLightsTheFloorAsItsVisibleFacesClosedFormsSayInRadiosi
     EXPECT_EQ(expectPixelsMatch(image, kFloorCamera, floorBesideTheCsgLamp(), 0.03, 0), 81);
 }
 
+// A cube model, closed or with its top left open, as a csg's first child: the closed one
+// renders (the carved box beside the camera's line of sight), the open one is refused with one
+// line naming the object.
+TEST(CliCsg, MeshesAreChildrenWhenClosedAndRefusedWhenOpen) {
+    const TempFolder folder;
+    std::string vertices;
+    for (const char* v :
+         {"-1 -1 -1", "1 -1 -1", "1 1 -1", "-1 1 -1", "-1 -1 1", "1 -1 1", "1 1 1", "-1 1 1"})
+        vertices += std::string("v ") + v + "\n";
+    // Counter-clockwise seen from outside: the faces point out.
+    const std::string sides = "f 1 4 3 2\nf 5 6 7 8\nf 1 5 8 4\nf 2 3 7 6\nf 1 2 6 5\n";
+    folder.write("closed.obj", vertices + sides + "f 4 8 7 3\n");
+    folder.write("open.obj", vertices + sides);
+    const auto sceneWith = [](const std::string& file) {
+        return R"({
+  "render": { "width": 8, "height": 6, "spp": 1 },
+  "camera": { "position": [0, 1, 5], "look_at": [0, 0, 0] },
+  "lights": [ { "type": "point", "position": [2, 5, 3], "intensity": 40 } ],
+  "objects": [
+    { "type": "csg", "operation": "difference", "objects": [
+      { "type": "mesh", "file": ")" +
+               file + R"(" },
+      { "type": "sphere", "center": [1, 1, 1], "radius": 0.8 } ] }
+  ]
+}
+)";
+    };
+    folder.write("closed.json", sceneWith("closed.obj"));
+    folder.write("open.json", sceneWith("open.obj"));
+    const RunResult closed =
+        runLancer({"closed.json", "-o", "closed.png", "--quiet"}, folder.path());
+    EXPECT_EQ(closed.exitStatus, 0) << closed;
+    const RunResult open = runLancer({"open.json", "-o", "open.png", "--quiet"}, folder.path());
+    EXPECT_EQ(open.exitStatus, 2) << open;
+    ASSERT_EQ(open.errorLines().size(), 1u) << open;
+    EXPECT_EQ(open.errorLines()[0].rfind("open.json:7:7: error: a mesh here is not a solid", 0), 0u)
+        << open;
+    EXPECT_FALSE(fs::exists(folder / "open.png"));
+}
+
 }  // namespace
 }  // namespace lancer::test
