@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 namespace lancer {
@@ -44,14 +45,38 @@ private:
 thread_local std::vector<std::unique_ptr<Sweep>> SweepLease::pool_;
 thread_local std::size_t SweepLease::level_ = 0;
 
+// Whether the ray's whole line passes through the box (in double; the box already padded).
+bool lineMeetsBox(const Ray& ray, const Bounds3& box) {
+    double tEnter = -std::numeric_limits<double>::infinity(),
+           tExit = std::numeric_limits<double>::infinity();
+    for (int axis = 0; axis < 3; ++axis) {
+        const double o = ray.origin[axis], d = ray.direction[axis];
+        const double lo = box.min[axis], hi = box.max[axis];
+        if (d == 0) {
+            if (o < lo || o > hi) return false;
+            continue;
+        }
+        const double t0 = (lo - o) / d, t1 = (hi - o) / d;
+        tEnter = std::max(tEnter, std::min(t0, t1));
+        tExit = std::min(tExit, std::max(t0, t1));
+    }
+    return tEnter <= tExit;
+}
+
 }  // namespace
 
 Csg::Csg(Operation operation, std::vector<std::unique_ptr<Shape>> children,
          const Material* material)
     : Shape(material), operation_(operation), children_(std::move(children)) {
     firstPrimitive_.push_back(0);
-    for (const auto& child : children_)
+    for (const auto& child : children_) {
         firstPrimitive_.push_back(firstPrimitive_.back() + child->primitiveCount());
+        // Padded by far more than the rounding of the children's own tests, so that a line the
+        // box test turns away never had a crossing to give.
+        const Bounds3 b = child->bounds();
+        const Vec3 pad = 1e-5f * (b.max - b.min) + 1e-6f * max(abs(b.min), abs(b.max));
+        childBounds_.push_back({b.min - pad, b.max + pad});
+    }
     bounds_ = children_.front()->bounds();
     for (std::size_t k = 1; k < children_.size(); ++k) {
         const Bounds3 b = children_[k]->bounds();
@@ -105,7 +130,7 @@ void Csg::resultCrossings(const Ray& ray, double tStop, LineCrossings& crossings
     events.clear();
     for (std::size_t k = 0; k < children_.size(); ++k) {
         const std::size_t first = events.size();
-        children_[k]->crossLine(ray, events);
+        if (lineMeetsBox(ray, childBounds_[k])) children_[k]->crossLine(ray, events);
         // Nothing of an intersection, or of a difference, lies off its first child.
         if (events.size() == first && (operation_ == Operation::kIntersection ||
                                        (operation_ == Operation::kDifference && k == 0)))

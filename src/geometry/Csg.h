@@ -62,6 +62,7 @@ private:
     Operation operation_;
     std::vector<std::unique_ptr<Shape>> children_;
     std::vector<std::uint32_t> firstPrimitive_;  // per child, and the total at the end
+    std::vector<Bounds3> childBounds_;           // a little larger than the children's
     Bounds3 bounds_;
 };
 

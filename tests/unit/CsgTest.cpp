@@ -30,10 +30,7 @@ const BlinnPhongMaterial kOuter, kInner;
 
 std::unique_ptr<Csg> combine(Csg::Operation operation, std::unique_ptr<Shape> a,
                              std::unique_ptr<Shape> b) {
-    std::vector<std::unique_ptr<Shape>> children;
-    children.push_back(std::move(a));
-    children.push_back(std::move(b));
-    return std::make_unique<Csg>(operation, std::move(children), &kOuter);
+    return test::combine(operation, std::move(a), std::move(b), &kOuter);
 }
 
 // The lens of two unit spheres whose centres are 1 apart on z.

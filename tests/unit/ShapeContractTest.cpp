@@ -79,10 +79,7 @@ std::unique_ptr<Shape> makeClosedMesh(const Vec3& c) {
 
 std::unique_ptr<Shape> makeCsg(Csg::Operation operation, std::unique_ptr<Shape> a,
                                std::unique_ptr<Shape> b) {
-    std::vector<std::unique_ptr<Shape>> children;
-    children.push_back(std::move(a));
-    children.push_back(std::move(b));
-    return std::make_unique<Csg>(operation, std::move(children), &kMaterial);
+    return test::combine(operation, std::move(a), std::move(b), &kMaterial);
 }
 
 std::vector<ShapeCase> shapeCases() {

@@ -6,12 +6,15 @@
 
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <random>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "geometry/Csg.h"
 #include "geometry/Hit.h"
 #include "math/Vec3.h"
 
@@ -165,6 +168,15 @@ template <typename T>
             return ::testing::AssertionFailure() << describe(actual) << " is not within "
                                                  << tolerance << " of " << describe(expected);
     return ::testing::AssertionSuccess();
+}
+
+// The CSG of two solids, with the given material.
+inline std::unique_ptr<Csg> combine(Csg::Operation operation, std::unique_ptr<Shape> a,
+                                    std::unique_ptr<Shape> b, const Material* material) {
+    std::vector<std::unique_ptr<Shape>> children;
+    children.push_back(std::move(a));
+    children.push_back(std::move(b));
+    return std::make_unique<Csg>(operation, std::move(children), material);
 }
 
 #define EXPECT_VEC3_NEAR(actual, expected, tolerance) \
