@@ -204,7 +204,8 @@ union {
   torus { 0.17, 0.05 translate y * 0.8 }
   sphere { <0, 1.03, 0>, 0.21 }
   texture { T_Ivory }
-  translate <-0.1, 0, 1.9>
+  scale 1.4
+  translate <-2.2, 0, 1.4>
 }
 
 // three glass spheres: lancer's union has no inner surfaces, which is POV-Ray's merge
