@@ -272,6 +272,54 @@ TEST(Csg, SpawnedRaysDoNotHitTheSurfaceTheyLeave) {
     EXPECT_GT(leaving, 1000);
 }
 
+// The same at every placement and scale of the scene (1e-3 to 1e4, and far from the origin):
+// a sphere with a box bitten out of it, and a box unioned to it.
+class CsgSpawnTest : public testing::TestWithParam<test::SceneFrame> {};
+
+TEST_P(CsgSpawnTest, SpawnedRaysFindTheNextSurfaceNotTheOneTheyLeave) {
+    const test::SceneFrame& frame = GetParam();
+    const auto box = [&](const Vec3& lo, const Vec3& hi) {
+        return std::make_unique<Box>(frame.place(lo), frame.place(hi), &kOuter);
+    };
+    const auto shape =
+        combine(Csg::Operation::kUnion,
+                combine(Csg::Operation::kDifference,
+                        std::make_unique<Sphere>(frame.place(Vec3(0)), frame.scale, &kOuter),
+                        box(Vec3(0.3f, 0.2f, -2), Vec3(2, 2, 2))),
+                box(Vec3(-1.5f, -1.2f, -0.4f), Vec3(-0.5f, 0.2f, 0.4f)));
+    Random random(21);
+    int checked = 0, lost = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const Vec3 origin = frame.place(4.0f * random.unitVector());
+        const Vec3 aim = frame.place(0.6f * random.unitVector());
+        const std::optional<Hit> hit =
+            shape->intersect({origin, normalize(aim - origin)}, kInfinity);
+        if (!hit) continue;
+        Vec3 out = random.unitVector();
+        if (dot(out, hit->ng) < 0) out = -out;
+        // (A grazing ray may leave a curved surface and meet it again a chord away.)
+        if (dot(out, hit->ng) < 0.05f) continue;
+        for (const Vec3& direction : {out, -out}) {
+            const std::optional<Hit> next = shape->intersect(hit->spawnRay(direction), kInfinity);
+            if (next) {
+                EXPECT_TRUE(next->t > 1e-3f * frame.scale || next->primitive != hit->primitive)
+                    << "self-intersection at " << i;
+            }
+            // Into the solid, a ray leaves it again.
+            if (dot(direction, hit->ng) < 0 && !next) ++lost;
+        }
+        ++checked;
+    }
+    EXPECT_GT(checked, 1000);
+    // Except, 1e4 from the origin, at a few points within a float step (there 1e-3 of the
+    // solid's size) of a seam between two children, where the rounded hit point can lie on the
+    // wrong side of the other child (6 of 2000 when measured).
+    EXPECT_LE(lost, frame.offset == Vec3(0) ? 0 : checked / 100) << lost << " rays lost";
+}
+
+INSTANTIATE_TEST_SUITE_P(Frames, CsgSpawnTest, testing::ValuesIn(test::kSceneFrames),
+                         test::frameName);
+
 TEST(Csg, SamplesLieOnTheVisibleSurfaceAndCountItsAreaOnce) {
     // Two unit spheres 1 apart: each loses a cap of height 1/2 inside the other, so the union's
     // surface is 2 (4 pi - 2 pi h) = 6 pi.
