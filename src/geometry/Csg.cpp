@@ -45,10 +45,10 @@ private:
 thread_local std::vector<std::unique_ptr<Sweep>> SweepLease::pool_;
 thread_local std::size_t SweepLease::level_ = 0;
 
-// Whether the ray's whole line passes through the box (in double; the box already padded).
-bool lineMeetsBox(const Ray& ray, const Bounds3& box) {
-    double tEnter = -std::numeric_limits<double>::infinity(),
-           tExit = std::numeric_limits<double>::infinity();
+// Whether the ray's line passes through the box (in double; the box already padded) somewhere
+// with tLow < t < tHigh.
+bool lineMeetsBox(const Ray& ray, const Bounds3& box, double tLow, double tHigh) {
+    double tEnter = tLow, tExit = tHigh;
     for (int axis = 0; axis < 3; ++axis) {
         const double o = ray.origin[axis], d = ray.direction[axis];
         const double lo = box.min[axis], hi = box.max[axis];
@@ -122,7 +122,8 @@ bool Csg::onResultSurface(std::size_t k, const Vec3& p) const {
     return withK != inResult(inside);
 }
 
-void Csg::resultCrossings(const Ray& ray, double tStop, LineCrossings& crossings) const {
+void Csg::resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOnly,
+                          LineCrossings& crossings) const {
     const SweepLease lease;
     Sweep& sweep = *lease;
     // The children's crossings, numbered as the result's primitives (which tells their child).
@@ -130,7 +131,9 @@ void Csg::resultCrossings(const Ray& ray, double tStop, LineCrossings& crossings
     events.clear();
     for (std::size_t k = 0; k < children_.size(); ++k) {
         const std::size_t first = events.size();
-        if (lineMeetsBox(ray, childBounds_[k])) children_[k]->crossLine(ray, events);
+        // A child the line meets only before tFrom or after tTo is outside all along the
+        // window: its crossings change nothing there.
+        if (lineMeetsBox(ray, childBounds_[k], tFrom, tTo)) children_[k]->crossLine(ray, events);
         // Nothing of an intersection, or of a difference, lies off its first child.
         if (events.size() == first && (operation_ == Operation::kIntersection ||
                                        (operation_ == Operation::kDifference && k == 0)))
@@ -173,7 +176,7 @@ void Csg::resultCrossings(const Ray& ray, double tStop, LineCrossings& crossings
                     break;
                 }
             crossings.push_back({events[chosen].crossing, inAfter});
-            if (events[chosen].crossing.t > tStop) return;
+            if (firstOnly && events[chosen].crossing.t > tFrom) return;
             inBefore = inAfter;
         }
         first = end;
@@ -183,7 +186,7 @@ void Csg::resultCrossings(const Ray& ray, double tStop, LineCrossings& crossings
 std::optional<SurfaceCrossing> Csg::cross(const Ray& ray, float tMax) const {
     thread_local LineCrossings crossings;
     crossings.clear();
-    resultCrossings(ray, 0, crossings);
+    resultCrossings(ray, 0, tMax, true, crossings);
     if (crossings.empty()) return std::nullopt;
     const SurfaceCrossing& last = crossings.back().crossing;
     if (last.t > 0 && last.t < tMax) return last;
@@ -191,7 +194,8 @@ std::optional<SurfaceCrossing> Csg::cross(const Ray& ray, float tMax) const {
 }
 
 void Csg::crossLine(const Ray& ray, LineCrossings& crossings) const {
-    resultCrossings(ray, kInfinity, crossings);
+    constexpr double kWholeLine = std::numeric_limits<double>::infinity();
+    resultCrossings(ray, -kWholeLine, kWholeLine, false, crossings);
 }
 
 Hit Csg::record(const Ray& ray, const SurfaceCrossing& crossing) const {

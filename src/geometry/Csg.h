@@ -55,9 +55,11 @@ private:
     // Adds the parts of child k's facet that lie on the result's surface.
     void addVisibleParts(std::size_t k, const Tessellation::Facet& facet, int refinements,
                          std::vector<Tessellation::Facet>& facets) const;
-    // Every crossing of the result along the ray's line, with the child each is on; stops after
-    // the first with t > tStop.
-    void resultCrossings(const Ray& ray, double tStop, LineCrossings& crossings) const;
+    // The result's crossings along the ray's line that the children met within tFrom < t < tTo
+    // make (those met only outside it are left out, which changes nothing within it), in order,
+    // each numbered by the result's primitive; with firstOnly, up to the first with t > tFrom.
+    void resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOnly,
+                         LineCrossings& crossings) const;
 
     Operation operation_;
     std::vector<std::unique_ptr<Shape>> children_;
