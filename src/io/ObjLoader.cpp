@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "geometry/PolygonTriangulator.h"
+#include "io/InputFile.h"
 #include "io/MtlMaterialConverter.h"
 #include "io/ObjSupport.h"
 #include "materials/BlinnPhongMaterial.h"
@@ -63,6 +64,11 @@ public:
                     std::string* mtlErrors) override {
         named_ = true;
         const fs::path path = resolvePath(objFolder_, name);
+        try {
+            InputFile::check(path, "an MTL file", "MTL files", InputFile::kMaxModelBytes);
+        } catch (const InputError& e) {
+            throw InputError(path.string(), "mtllib " + inQuotes(name) + ": " + e.message());
+        }
         std::error_code error;
         std::ifstream file(path, std::ios::binary);
         if (!file || fs::is_directory(path, error)) {
@@ -131,9 +137,7 @@ bool hasTruncatedFaceSizes(const std::vector<tinyobj::shape_t>& shapes) {
 }
 
 std::ifstream openObj(const fs::path& path) {
-    std::error_code error;
-    if (fs::is_directory(path, error))
-        throw InputError(path.string(), "is a folder, not an OBJ file");
+    InputFile::check(path, "an OBJ file", "OBJ files", InputFile::kMaxModelBytes);
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path.string(), "cannot open the OBJ file (does it exist?)");
     const int first = file.get(), second = file.get();

@@ -21,6 +21,7 @@
 #include "geometry/Triangle.h"
 #include "integrators/IntegratorRegistry.h"
 #include "io/ImageReader.h"
+#include "io/InputFile.h"
 #include "io/JsonDocument.h"
 #include "io/ObjLoader.h"
 #include "lights/AreaLight.h"
@@ -305,14 +306,18 @@ std::vector<SceneLoader::Vocabulary> SceneLoader::vocabulary() {
 }
 
 Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
-    std::error_code error;
-    if (std::filesystem::is_directory(path, error))
-        throw InputError(path.string(), "is a folder, not a scene file");
+    InputFile::check(path, "a scene file", "scene files", InputFile::kMaxSceneBytes);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "cannot open the scene file (does it exist?)");
-    std::ostringstream text;
-    text << in.rdbuf();
-    return loadString(text.str(), path.string(), warnings);
+    // Read in blocks, so that a pipe that never ends stops at the limit too.
+    std::string text;
+    std::string block(1 << 16, '\0');
+    while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
+        text.append(block.data(), static_cast<std::size_t>(in.gcount()));
+        if (text.size() > InputFile::kMaxSceneBytes)
+            throw InputError(path.string(), "is larger than the 1 GiB limit for scene files");
+    }
+    return loadString(text, path.string(), warnings);
 }
 
 Scene SceneLoader::loadString(const std::string& text, const std::string& fileName,

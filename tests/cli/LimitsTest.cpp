@@ -74,6 +74,57 @@ TEST(CliImageLimit, AnImageLargerThanTheMemoryIsRefusedBeforeAnyWork) {
     EXPECT_EQ(folder.entries(), std::vector<std::string>{"scene.json"});
 }
 
+// Inputs that would grow memory without end: a device read as a scene, an OBJ or an MTL file,
+// and files larger than their limits (sparse files: their size costs no disk). Each is refused
+// with one line and exit status 2 within a second, and nothing is written.
+struct InputCase {
+    std::string name;
+    std::string sceneArgument;  // the scene file given to lancer
+    std::string objects;        // the scene's "objects", when the scene is scene.json
+    std::string expectedLine;
+};
+
+std::ostream& operator<<(std::ostream& out, const InputCase& c) {
+    return out << c.name;
+}
+
+class CliInputSizeLimit : public testing::TestWithParam<InputCase> {};
+
+TEST_P(CliInputSizeLimit, IsRefusedWithOneLineBeforeItIsRead) {
+    const InputCase& c = GetParam();
+    const TempFolder folder;
+    folder.write("scene.json", R"({ "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] },
+  "objects": [)" + c.objects + "] }");
+    folder.write("uses-zero.obj", "mtllib /dev/zero\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+    for (const auto& [name, size] : {std::pair{"huge.json", 2ull << 30}, {"huge.obj", 5ull << 30}})
+        ASSERT_EQ(truncate(folder.write(name, "").c_str(), static_cast<off_t>(size)), 0) << name;
+    const RunResult run =
+        runLancer({c.sceneArgument, "-o", "out.png"}, folder.path(), std::chrono::seconds(10));
+    EXPECT_EQ(run.exitStatus, 2) << run;
+    const std::vector<std::string> lines = run.errorLines();
+    ASSERT_EQ(lines.size(), 1u) << run;
+    EXPECT_EQ(lines[0], c.expectedLine);
+    EXPECT_FALSE(fs::exists(folder / "out.png"));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Inputs, CliInputSizeLimit,
+    testing::Values(
+        InputCase{"DeviceAsTheScene", "/dev/zero", "",
+                  "/dev/zero: error: is a device, not a scene file"},
+        InputCase{"SceneLargerThanItsLimit", "huge.json", "",
+                  "huge.json: error: is larger than the 1 GiB limit for scene files"},
+        InputCase{"DeviceAsAModel", "scene.json", R"({ "type": "mesh", "file": "/dev/zero" })",
+                  R"(scene.json:2:41: error: mesh "/dev/zero": is a device, not an OBJ file)"},
+        InputCase{
+            "ModelLargerThanItsLimit", "scene.json", R"({ "type": "mesh", "file": "huge.obj" })",
+            R"(scene.json:2:41: error: mesh "huge.obj": is larger than the 4 GiB limit for OBJ files)"},
+        InputCase{
+            "DeviceAsAMaterialLibrary", "scene.json",
+            R"({ "type": "mesh", "file": "uses-zero.obj" })",
+            R"(scene.json:2:41: error: mesh "uses-zero.obj": mtllib "/dev/zero": is a device, not an MTL file)"}),
+    [](const testing::TestParamInfo<InputCase>& test) { return test.param.name; });
+
 INSTANTIATE_TEST_SUITE_P(Integrators, CliDepthLimit, testing::Values("whitted", "path"),
                          [](const testing::TestParamInfo<std::string>& test) {
                              return test.param;
