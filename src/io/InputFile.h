@@ -28,9 +28,14 @@ struct InputFile {
         if (!std::filesystem::is_regular_file(status)) return;  // a pipe: its reader caps it
         if (const std::uintmax_t size = std::filesystem::file_size(path, error);
             !error && size > maxBytes)
-            throw InputError(path.string(), "is larger than the " +
-                                                std::to_string(maxBytes / kGiB) +
-                                                " GiB limit for " + kinds);
+            throw tooLarge(path, kinds, maxBytes);
+    }
+
+    // The error of a file (or a pipe, found out while reading it) beyond its kind's limit.
+    static InputError tooLarge(const std::filesystem::path& path, const std::string& kinds,
+                               std::uintmax_t maxBytes) {
+        return InputError(path.string(), "is larger than the " + std::to_string(maxBytes / kGiB) +
+                                             " GiB limit for " + kinds);
     }
 };
 

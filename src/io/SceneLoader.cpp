@@ -315,7 +315,7 @@ Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::
     while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
         text.append(block.data(), static_cast<std::size_t>(in.gcount()));
         if (text.size() > InputFile::kMaxSceneBytes)
-            throw InputError(path.string(), "is larger than the 1 GiB limit for scene files");
+            throw InputFile::tooLarge(path, "scene files", InputFile::kMaxSceneBytes);
     }
     return loadString(text, path.string(), warnings);
 }
