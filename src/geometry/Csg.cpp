@@ -113,7 +113,10 @@ bool Csg::inResult(const std::vector<bool>& insideChild) const {
 }
 
 bool Csg::onResultSurface(std::size_t k, const Vec3& p) const {
-    std::vector<bool> inside(children_.size());
+    // (Asked for every light sample: the thread's buffer, not a new vector.)
+    const SweepLease lease;
+    std::vector<bool>& inside = (*lease).inside;
+    inside.assign(children_.size(), false);
     for (std::size_t i = 0; i < children_.size(); ++i)
         if (i != k) inside[i] = children_[i]->contains(p);
     inside[k] = true;
