@@ -354,6 +354,26 @@ TEST(Bsdf, RoughGlassRefractsThroughTheSurface) {
     EXPECT_GT(total, 0.95f);
 }
 
+// Whitted's and radiosity's highlight of a rough lobe is f cos(theta_L), for delta lights only:
+// an area light reaches the lobe through its traced rays instead, and would count twice.
+TEST(Bsdf, RoughLobesShadeDeltaLightsOnly) {
+    const Hit hit = hitFacingZ();
+    BlinnPhongMaterial::Parameters p = mirrorAndGlass(0.3f);
+    p.transmission = Color(0);
+    p.conductor = kGold;
+    const BlinnPhongMaterial gold(p);
+    const Bsdf bsdf(gold, hit, Bsdf::Weights::AsGiven);
+    const RoughConductorLobe lobe(Color(0.3f), 0.3f, kGold);
+    const Vec3 wo = direction(30, 0), wi = direction(40, 180);
+    const Color expected = lobe.f(wo, wi) * wi.z;
+    ASSERT_GT(expected.g, 0);
+    EXPECT_NEAR(bsdf.localResponse(wo, wi, true, true).g, expected.g, 1e-6f);
+    EXPECT_TRUE(bsdf.localResponse(wo, wi, true, false).isBlack());
+    EXPECT_NEAR(bsdf.glossyF(wo, wi, true).r, lobe.f(wo, wi).r, 1e-6f);
+    EXPECT_TRUE(bsdf.glossyF(wo, wi, false).isBlack());
+    EXPECT_TRUE(bsdf.hasGlossyLobe());
+}
+
 // The GGX density D(m) integrates to 1 over the projected hemisphere (integral of D cos).
 TEST(GgxDistribution, ProjectedDensityIntegratesToOne) {
     for (const float alpha : {0.1f, 0.5f, 1.0f}) {
