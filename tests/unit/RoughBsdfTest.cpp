@@ -374,6 +374,33 @@ TEST(Bsdf, RoughLobesShadeDeltaLightsOnly) {
     EXPECT_TRUE(bsdf.hasGlossyLobe());
 }
 
+// Tiny roughness (the case that gave black dots in other renderers) and grazing directions give
+// finite values and sample weights of at most the lobe's weight (glass: times eta^2, the flux of
+// a refraction), never NaN.
+TEST(RoughLobes, TinyRoughnessAndGrazingDirectionsStayFinite) {
+    UniformSource random(37);
+    for (const float alpha : {1e-4f, 1e-3f, 1.0f}) {
+        const RoughConductorLobe conductor(Color(1), alpha, kGold);
+        const RoughDielectricLobe dielectric(Color(1), kIor, alpha);
+        for (const float theta : {0.0f, 45.0f, 89.9f, 90.1f, 135.0f, 179.9f}) {
+            const Vec3 wo = direction(theta, 10);
+            for (int k = 0; k < 2000; ++k) {
+                const float uChoice = random.next();
+                const Vec2 u = random.next2D();
+                for (const BsdfLobe* lobe : {static_cast<const BsdfLobe*>(&conductor),
+                                             static_cast<const BsdfLobe*>(&dielectric)}) {
+                    const auto s = lobe->sample(wo, uChoice, u);
+                    if (!s) continue;
+                    const Color weight = s->f * (std::abs(s->wi.z) / s->pdf * s->etaSquared);
+                    ASSERT_TRUE(weight.isFinite()) << "alpha " << alpha << ", theta " << theta;
+                    EXPECT_LE(weight.maxComponent(), 1 + 1e-3f)
+                        << "alpha " << alpha << ", theta " << theta;
+                }
+            }
+        }
+    }
+}
+
 // The GGX density D(m) integrates to 1 over the projected hemisphere (integral of D cos).
 TEST(GgxDistribution, ProjectedDensityIntegratesToOne) {
     for (const float alpha : {0.1f, 0.5f, 1.0f}) {
