@@ -1,9 +1,9 @@
 // Rough and metallic materials end to end: roughness 0 renders the very bytes of the smooth
-// mirror and glass (and a named metal those of its explicit conductor), a rough mirror of Fresnel
-// 1 under a uniform sky shows its single-scattering albedo (integrated here, independently of
-// lancer's code) in all three integrators, and a rough gold and a rough glass sphere under a
-// constant environment agree with Mitsuba 3's renders (references made by
-// data/rough/make_references.py) within the noise of both.
+// mirror and glass (and a named metal those of its explicit conductor), smooth gold shows the
+// table's colour head-on, a rough mirror of Fresnel 1 under a uniform sky shows its
+// single-scattering albedo (integrated here, independently of lancer's code) in all three
+// integrators, and a rough gold and a rough glass sphere under a constant environment agree with
+// Mitsuba 3's renders (references made by data/rough/make_references.py) within the noise of both.
 
 #include <gtest/gtest.h>
 
@@ -118,6 +118,32 @@ TEST_P(RoughMirrorUnderUniformSky, ShowsTheSingleScatteringAlbedo) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, RoughMirrorUnderUniformSky,
+                         testing::Values("whitted", "path", "radiosity"));
+
+class SmoothGoldUnderUniformSky : public testing::TestWithParam<std::string> {};
+
+// A smooth gold sphere under a sky of radiance 1, seen head-on through a 2-degree view, reflects
+// the sky with the table's reflectance at normal incidence (docs/SCENE-FORMAT.md: 0.967, 0.802,
+// 0.324); over the 1.5 degrees the normal turns, the Fresnel term changes by under 1e-4.
+TEST_P(SmoothGoldUnderUniformSky, ShowsTheTablesColourHeadOn) {
+    json scene = json::parse(R"({
+      "render": { "width": 5, "height": 5, "spp": 1, "max_depth": 3 },
+      "camera": { "position": [0, 0, 4], "look_at": [0, 0, 0], "vfov": 2 },
+      "background": 1,
+      "ambient": 0,
+      "materials": { "gold": { "metal": "gold" } },
+      "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "gold" } ]
+    })");
+    scene["render"]["integrator"] = GetParam();
+    const Image image = renderScene(scene).image;
+    for (const Image::Rgb& pixel : image.pixels) {
+        EXPECT_NEAR(pixel[0], 0.967, 6e-4);
+        EXPECT_NEAR(pixel[1], 0.802, 6e-4);
+        EXPECT_NEAR(pixel[2], 0.324, 6e-4);
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Integrators, SmoothGoldUnderUniformSky,
                          testing::Values("whitted", "path", "radiosity"));
 
 // Against Mitsuba 3: the noise of one render is rmse(a, b) / sqrt(2) for two seeds (4 x 4 pixel
