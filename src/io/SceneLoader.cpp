@@ -309,8 +309,12 @@ Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::
     InputFile::check(path, "a scene file", "scene files", InputFile::kMaxSceneBytes);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "cannot open the scene file (does it exist?)");
-    // Read in blocks, so that a pipe that never ends stops at the limit too.
+    // Read in blocks, so that a pipe that never ends stops at the limit too; a file's text is
+    // given its size at once (not up to twice that by doubling).
     std::string text;
+    std::error_code sizeUnknown;
+    if (const std::uintmax_t size = std::filesystem::file_size(path, sizeUnknown); !sizeUnknown)
+        text.reserve(static_cast<std::size_t>(size));
     std::string block(1 << 16, '\0');
     while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
         text.append(block.data(), static_cast<std::size_t>(in.gcount()));
