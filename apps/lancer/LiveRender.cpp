@@ -122,7 +122,8 @@ void LiveRender::saveSnapshot() {
                 output_.extension().string());
     while (std::filesystem::exists(path));
     try {
-        ImageWriter::write(viewer_.image(), path);
+        ImageWriter::write(
+            viewer_.toneMapper().forOutput(viewer_.image(), ImageWriter::storesLinear(path)), path);
         if (!quiet_) std::cerr << "lancer: snapshot written to " << path.string() << '\n';
     } catch (const std::exception& e) {
         std::cerr << "lancer: error: " << e.what() << '\n';

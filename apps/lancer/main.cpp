@@ -28,7 +28,9 @@
 #include "io/ImageWriter.h"
 #include "io/SceneLoader.h"
 #include "radiosity/RadiositySolver.h"
+#include "render/Aov.h"
 #include "render/Renderer.h"
+#include "render/ToneMapper.h"
 #include "scene/InputError.h"
 #include "scene/RenderSettings.h"
 #include "util/DidYouMean.h"
@@ -50,6 +52,7 @@ struct Options {
     int threads = 0;
     std::uint64_t seed = 0;
     std::optional<std::string> crop;
+    std::optional<std::string> aovs;  // --aov's list
     bool window = false;
     bool quiet = false;
     bool stats = false;
@@ -118,14 +121,19 @@ std::string unexpectedArguments(const CLI::App& app, int argc, char** argv,
     return std::string(error.what()) + " (see lancer --help)";
 }
 
-// The memory the image's buffers take, in bytes: the render's film and what the writer needs;
-// with the window, also its preview film, its own copy and the 8-bit pixels it shows (ours and
-// SDL's).
-std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output, bool window) {
+// The memory the image's buffers take, in bytes: the render's film, its copy as the output
+// stores it (ToneMapper::forOutput) and what the writer needs, and the same for each auxiliary
+// output; with the window, also its preview film, its own copy and the 8-bit pixels it shows
+// (ours and SDL's).
+std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output,
+                          std::size_t aovCount, bool window) {
     const std::uint64_t pixels =
         static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
-    std::uint64_t bytes =
-        pixels * sizeof(Color) + ImageWriter::memoryNeeded(output, settings.width, settings.height);
+    std::uint64_t bytes = pixels * 2 * sizeof(Color) +
+                          ImageWriter::memoryNeeded(output, settings.width, settings.height) +
+                          aovCount * (pixels * sizeof(Color) +
+                                      ImageWriter::memoryNeeded(fs::path("aov.exr"), settings.width,
+                                                                settings.height));
     if (window) bytes += pixels * (2 * sizeof(Color) + 2 * 3);
     return bytes;
 }
@@ -272,6 +280,14 @@ int run(const Options& options) {
     if (fs::is_directory(output))
         return fail(kExitFailure, "lancer: error: " + output.string() +
                                       ": cannot write the image (it is a folder)");
+    std::vector<const Aov*> aovs;
+    if (options.aovs) {
+        try {
+            aovs = Aov::parseList(*options.aovs);
+        } catch (const std::invalid_argument& e) {
+            return usageError(e.what());
+        }
+    }
 
     std::vector<std::string> warnings;
     Scene scene = SceneLoader::loadFile(options.scene, warnings);
@@ -287,16 +303,19 @@ int run(const Options& options) {
     if (options.integrator) settings.integrator = *options.integrator;
     // The image's buffers are allocated before the render starts, and all at once: refuse an
     // image that cannot fit before the first of them (or the radiosity solve) takes its time.
-    const std::uint64_t needed = imageMemory(settings, output, options.window);
+    const std::uint64_t needed = imageMemory(settings, output, aovs.size(), options.window);
     if (const std::uint64_t memory = physicalMemory(); memory > 0 && needed > memory)
         return usageError("a " + std::to_string(settings.width) + " x " +
                           std::to_string(settings.height) + " image needs about " +
                           gigabytes(needed) + " of memory for its buffers, more than the " +
                           gigabytes(memory) + " this machine has");
 
+    const ToneMapper toneMapper(settings.exposure, settings.tonemap);
+
     RenderOptions renderOptions;
     renderOptions.threads = options.threads;
     renderOptions.seed = options.seed;
+    renderOptions.aovs = aovs;
     if (options.crop) {
         std::string error;
         renderOptions.crop = parseCrop(*options.crop, settings.width, settings.height, error);
@@ -310,7 +329,7 @@ int run(const Options& options) {
     if (options.window) {
         std::string error;
         viewer = Viewer::open("lancer: " + fs::path(options.scene).filename().string(),
-                              settings.width, settings.height, error);
+                              settings.width, settings.height, toneMapper, error);
         if (!viewer && !options.quiet)
             std::cerr << "lancer: warning: --window: " << error << "; rendering without it\n";
     }
@@ -333,10 +352,14 @@ int run(const Options& options) {
         return InterruptSignals::exitStatus();
     }
 
-    // Writes the image as soon as its render ends; returns the exit status.
+    // Writes the image and its auxiliary outputs as soon as its render ends; returns the exit
+    // status.
     const auto deliver = [&](const RenderResult& result) {
         InterruptSignals::setPhase(InterruptSignals::Phase::Saving);
-        ImageWriter::write(result.film, output);
+        ImageWriter::write(toneMapper.forOutput(result.film, ImageWriter::storesLinear(output)),
+                           output);
+        for (std::size_t i = 0; i < aovs.size(); ++i)
+            ImageWriter::write(result.aovFilms[i], aovs[i]->pathBeside(output));
         InterruptSignals::setPhase(InterruptSignals::Phase::Working);
         if (result.interrupted) {
             std::cerr << "lancer: interrupted; the part rendered so far was written to "
@@ -421,6 +444,10 @@ int main(int argc, char** argv) {
             ""));
     app.add_option("--crop", options.crop,
                    "Render only the pixels X0,Y0,X1,Y1 (inclusive-exclusive)");
+    app.add_option("--aov", options.aovs,
+                   "Also write auxiliary outputs beside the image, OUT.NAME.exr, for a denoiser: "
+                   "any of " +
+                       Aov::types().quotedNames() + ", separated by commas");
     app.add_flag("--window", options.window, "Show the image in a window while it renders");
     app.add_flag("--quiet", options.quiet, "No progress bar or summary, only errors");
     app.add_flag("--stats", options.stats,
