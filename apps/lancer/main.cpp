@@ -121,15 +121,14 @@ std::string unexpectedArguments(const CLI::App& app, int argc, char** argv,
     return std::string(error.what()) + " (see lancer --help)";
 }
 
-// The memory the image's buffers take, in bytes: the render's film, its copy as the output
-// stores it (ToneMapper::forOutput) and what the writer needs, and the same for each auxiliary
-// output; with the window, also its preview film, its own copy and the 8-bit pixels it shows
-// (ours and SDL's).
+// The memory the image's buffers take, in bytes: the render's film and what the writer needs, and
+// the same for each auxiliary output; with the window, also its preview film, its own copy and
+// the 8-bit pixels it shows (ours and SDL's).
 std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output,
                           std::size_t aovCount, bool window) {
     const std::uint64_t pixels =
         static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
-    std::uint64_t bytes = pixels * 2 * sizeof(Color) +
+    std::uint64_t bytes = pixels * sizeof(Color) +
                           ImageWriter::memoryNeeded(output, settings.width, settings.height) +
                           aovCount * (pixels * sizeof(Color) +
                                       ImageWriter::memoryNeeded(fs::path("aov.exr"), settings.width,
@@ -354,10 +353,10 @@ int run(const Options& options) {
 
     // Writes the image and its auxiliary outputs as soon as its render ends; returns the exit
     // status.
-    const auto deliver = [&](const RenderResult& result) {
+    const auto deliver = [&](RenderResult& result) {
         InterruptSignals::setPhase(InterruptSignals::Phase::Saving);
-        ImageWriter::write(toneMapper.forOutput(result.film, ImageWriter::storesLinear(output)),
-                           output);
+        toneMapper.mapForOutput(result.film, ImageWriter::storesLinear(output));
+        ImageWriter::write(result.film, output);
         for (std::size_t i = 0; i < aovs.size(); ++i)
             ImageWriter::write(result.aovFilms[i], aovs[i]->pathBeside(output));
         InterruptSignals::setPhase(InterruptSignals::Phase::Working);
@@ -386,7 +385,7 @@ int run(const Options& options) {
     renderOptions.onTileDone = [&](const FinishedTile& tile) {
         progress.update(tile.tilesDone, tile.tilesTotal);
     };
-    const RenderResult result = Renderer(scene, *integrator).render(renderOptions);
+    RenderResult result = Renderer(scene, *integrator).render(renderOptions);
     progress.finish();
     return deliver(result);
 }

@@ -58,12 +58,12 @@ Color ToneMapper::display(const Color& radiance) const {
     return {map(radiance.r), map(radiance.g), map(radiance.b)};
 }
 
-Image ToneMapper::forOutput(const Image& film, bool linear) const {
-    Image output(film.width(), film.height());
+void ToneMapper::mapForOutput(Image& film, bool linear) const {
     for (int y = 0; y < film.height(); ++y)
-        for (int x = 0; x < film.width(); ++x)
-            output.at(x, y) = linear ? exposed(film.at(x, y)) : display(film.at(x, y));
-    return output;
+        for (int x = 0; x < film.width(); ++x) {
+            Color& c = film.at(x, y);
+            c = linear ? exposed(c) : display(c);
+        }
 }
 
 }  // namespace lancer

@@ -33,9 +33,9 @@ public:
     // encode as sRGB.
     Color display(const Color& radiance) const;
 
-    // The film as an output stores it: exposed, and for an 8-bit output (not `linear`) mapped
-    // for display.
-    Image forOutput(const Image& film, bool linear) const;
+    // Turns a film into what an output stores: exposed, and for an 8-bit output (not `linear`)
+    // mapped for display. In place: a film may take gigabytes.
+    void mapForOutput(Image& film, bool linear) const;
 
 private:
     float scale_;

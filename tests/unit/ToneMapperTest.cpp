@@ -60,15 +60,17 @@ TEST(ToneMapper, EveryOperatorMapsZeroNegativeAndNanToBlackAndHugeToWhite) {
     }
 }
 
-TEST(ToneMapper, ForOutputExposesLinearOutputsAndMapsEightBitOnes) {
+TEST(ToneMapper, MapForOutputExposesLinearOutputsAndMapsEightBitOnes) {
     Image film(2, 1);
     film.at(0, 0) = Color(0.5f);
     film.at(1, 0) = Color(3);
     const ToneMapper mapper(1, "reinhard");
-    const Image linear = mapper.forOutput(film, true);
+    Image linear = film;
+    mapper.mapForOutput(linear, true);
     EXPECT_EQ(linear.at(0, 0), Color(1));
     EXPECT_EQ(linear.at(1, 0), Color(6));  // above 1: linear outputs keep their range
-    const Image display = mapper.forOutput(film, false);
+    Image display = film;
+    mapper.mapForOutput(display, false);
     EXPECT_NEAR(display.at(0, 0).b, 0.5, kFloatTolerance);
     EXPECT_NEAR(display.at(1, 0).b, 6.0 / 7.0, kFloatTolerance);
 }
