@@ -125,14 +125,15 @@ std::string unexpectedArguments(const CLI::App& app, int argc, char** argv,
 // the same for each auxiliary output; with the window, also its preview film, its own copy and
 // the 8-bit pixels it shows (ours and SDL's).
 std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output,
-                          std::size_t aovCount, bool window) {
+                          const std::vector<const Aov*>& aovs, bool window) {
     const std::uint64_t pixels =
         static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
-    std::uint64_t bytes = pixels * sizeof(Color) +
-                          ImageWriter::memoryNeeded(output, settings.width, settings.height) +
-                          aovCount * (pixels * sizeof(Color) +
-                                      ImageWriter::memoryNeeded(fs::path("aov.exr"), settings.width,
-                                                                settings.height));
+    std::uint64_t bytes =
+        pixels * sizeof(Color) + ImageWriter::memoryNeeded(output, settings.width, settings.height);
+    for (const Aov* aov : aovs)
+        bytes +=
+            pixels * sizeof(Color) +
+            ImageWriter::memoryNeeded(aov->pathBeside(output), settings.width, settings.height);
     if (window) bytes += pixels * (2 * sizeof(Color) + 2 * 3);
     return bytes;
 }
@@ -302,7 +303,7 @@ int run(const Options& options) {
     if (options.integrator) settings.integrator = *options.integrator;
     // The image's buffers are allocated before the render starts, and all at once: refuse an
     // image that cannot fit before the first of them (or the radiosity solve) takes its time.
-    const std::uint64_t needed = imageMemory(settings, output, aovs.size(), options.window);
+    const std::uint64_t needed = imageMemory(settings, output, aovs, options.window);
     if (const std::uint64_t memory = physicalMemory(); memory > 0 && needed > memory)
         return usageError("a " + std::to_string(settings.width) + " x " +
                           std::to_string(settings.height) + " image needs about " +
@@ -411,7 +412,8 @@ int main(int argc, char** argv) {
     app.add_option(
         "-o,--output", options.output,
         "Output image; the extension picks the format: .png .jpg .bmp .tga .tif (8-bit sRGB), "
-        ".exr .hdr .pfm (linear float). Default: the scene's name with .png");
+        ".exr .hdr .pfm (linear float); the scene's exposure and tonemap apply. Default: the "
+        "scene's name with .png");
     app.add_option("--width", options.width, "Image width in pixels (overrides the scene)")
         ->check(CLI::Range(1, RenderSettings::kMaxImageSide));
     app.add_option("--height", options.height, "Image height in pixels (overrides the scene)")
