@@ -83,10 +83,10 @@ TEST(CliImageLimit, TheAuxiliaryOutputsCountInTheMemoryNeeded) {
         GTEST_SKIP() << "this machine has the memory for the largest image and its outputs";
     const TempFolder folder;
     folder.write("scene.json", loadWhittedScene().dump());
-    const RunResult run = runLancer(
-        {"scene.json", "-o", "out.pfm", "--width", std::to_string(kSide), "--height",
-         std::to_string(kSide), "--aov", "albedo,normal,depth"},
-        folder.path(), std::chrono::seconds(10));
+    const RunResult run =
+        runLancer({"scene.json", "-o", "out.pfm", "--width", std::to_string(kSide), "--height",
+                   std::to_string(kSide), "--aov", "albedo,normal,depth"},
+                  folder.path(), std::chrono::seconds(10));
     EXPECT_EQ(run.exitStatus, 2) << run;
     EXPECT_NE(run.standardError.find("image needs about 154.6 GB of memory"), std::string::npos)
         << run;
