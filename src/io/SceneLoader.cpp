@@ -35,6 +35,7 @@
 #include "materials/MaterialParameters.h"
 #include "math/Transform.h"
 #include "render/Filter.h"
+#include "render/ToneMapper.h"
 #include "util/DidYouMean.h"
 #include "util/Parameters.h"
 #include "util/Registry.h"
@@ -302,6 +303,7 @@ std::vector<SceneLoader::Vocabulary> SceneLoader::vocabulary() {
             {"materials", Reader::materialTypes().names()},
             {"textures", Reader::textureTypes().names()},
             {"filters", Filter::types().names()},
+            {"tone operators", ToneMapper::operators().names()},
             {"integrators", IntegratorRegistry::table().names()}};
 }
 
@@ -371,7 +373,8 @@ Scene SceneLoader::Reader::load() {
 void SceneLoader::Reader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
     checkKeys(node, "\"render\"",
-              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive"});
+              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive",
+               "exposure", "tonemap"});
     RenderSettings& settings = scene_.settings();
     if (node.has("width"))
         settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
@@ -386,6 +389,16 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     }
     if (node.has("filter")) loadFilter(node["filter"]);
     if (node.has("adaptive")) loadAdaptive(node, node["adaptive"]);
+    if (node.has("exposure")) {
+        const Node exposure = node["exposure"];
+        settings.exposure = readNumber(exposure);
+        constexpr int limit = RenderSettings::kMaxExposure;
+        if (std::abs(settings.exposure) > static_cast<float>(limit))
+            fail(exposure, "\"exposure\" must be between -" + std::to_string(limit) + " and " +
+                               std::to_string(limit) + " stops");
+    }
+    if (node.has("tonemap"))
+        settings.tonemap = lookUp(ToneMapper::operators(), node["tonemap"], "tonemap").name;
 }
 
 void SceneLoader::Reader::loadFilter(const Node& node) {
