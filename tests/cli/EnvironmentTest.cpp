@@ -68,6 +68,60 @@ TEST(CliEnvironment, OneBrightTexelIsSeenWhereTheMappingSaysAndTurnedByRotate) {
     }
 }
 
+// Reflections and refractions that leave the scene see the map too: a mirror floor (y = 0) seen
+// along d mirrored in it shows the texel, times its reflectance 0.5; a glass slab of parallel
+// faces (the ray leaves it along the direction it entered) seen from below along d shows it
+// times the slab's Fresnel transmittance.
+TEST(CliEnvironment, ReflectionsAndRefractionsSeeTheMap) {
+    const TempFolder folder;
+    constexpr int kW = 16, kH = 8;
+    lancer::Image map(kW, kH, Color(0));
+    map.at(11, 3) = Color(5, 6, 7);
+    writePfm(map, folder / "map.pfm");
+    const Vec3d d = texelDirection(11, 3, kW, kH);
+    for (const std::string integrator : {"whitted", "path"}) {
+        SCOPED_TRACE(integrator);
+        json mirror = lookingAlong({d.x, -d.y, d.z}, folder / "map.pfm", integrator);
+        mirror["camera"]["position"] = {0, 1, 0};
+        mirror["camera"]["look_at"] = {d.x, 1 - d.y, d.z};
+        mirror["render"]["max_depth"] = 2;
+        mirror["materials"] = {{"mirror", {{"diffuse", 0}, {"reflection", 0.5}}}};
+        mirror["objects"] = {{{"type", "plane"},
+                              {"point", {0, 0, 0}},
+                              {"normal", {0, 1, 0}},
+                              {"material", "mirror"}}};
+        EXPECT_NEAR(centreGreen(mirror), 0.5 * 12, 1e-3);
+    }
+    // Through glass: each face passes 1 - F of the light, F the dielectric Fresnel reflectance
+    // (ior 1.5) at the slab's angle of incidence (the rays reflected inside leave downwards, where
+    // the map is black). Whitted splits the ray at each face; the path tracer picks reflection or
+    // refraction by F, so its centre pixel averages 65536 samples (a standard error of 0.5%:
+    // within 2%), over a view narrowed so that the map does not vary across the pixel.
+    const double cosI = std::abs(d.y), sinT = std::sqrt(1 - cosI * cosI) / 1.5;
+    const double cosT = std::sqrt(1 - sinT * sinT);
+    const double rs = (cosI - 1.5 * cosT) / (cosI + 1.5 * cosT);
+    const double rp = (1.5 * cosI - cosT) / (1.5 * cosI + cosT);
+    const double passed = std::pow(1 - (rs * rs + rp * rp) / 2, 2);
+    double through[2] = {0, 0};
+    int i = 0;
+    for (const std::string integrator : {"whitted", "path"}) {
+        json glass = lookingAlong(d, folder / "map.pfm", integrator);
+        glass["camera"]["vfov"] = 0.001;
+        glass["render"]["spp"] = integrator == "path" ? 65536 : 1;
+        glass["camera"]["position"] = {0, -1, 0};
+        glass["camera"]["look_at"] = {d.x, d.y - 1, d.z};
+        glass["render"]["max_depth"] = 3;
+        glass["materials"] = {{"glass", {{"diffuse", 0}, {"transmission", 1}, {"ior", 1.5}}}};
+        glass["objects"] = {{{"type", "box"},
+                             {"min", {-50, -0.5, -50}},
+                             {"max", {50, -0.3, 50}},
+                             {"material", "glass"}}};
+        through[i++] = centreGreen(glass);
+    }
+    EXPECT_NEAR(through[0], passed * 12, 1e-3 * 12);
+    EXPECT_NEAR(through[1], passed * 12, 0.02 * passed * 12);
+}
+
 // --- A Lambertian floor under a map -------------------------------------------------------------
 
 // A sky: a gradient from a pale horizon to a blue zenith and a ground colour below it, and a 2 x 2
