@@ -26,6 +26,7 @@
 #include "io/ObjLoader.h"
 #include "lights/AreaLight.h"
 #include "lights/DirectionalLight.h"
+#include "lights/EnvironmentLight.h"
 #include "lights/PointLight.h"
 #include "lights/SpotLight.h"
 #include "materials/BlinnPhongMaterial.h"
@@ -64,6 +65,10 @@ std::vector<std::string> withKeys(std::vector<std::string> common,
     common.insert(common.end(), own.begin(), own.end());
     return common;
 }
+
+// How many shadow rays the Whitted integrator traces towards an area light or the environment per
+// shading point, unless the scene says.
+constexpr int kDefaultShadowSamples = 16;
 
 }  // namespace
 
@@ -154,6 +159,8 @@ private:
     // A light that reads its own keys: LightType::keys() and LightType::create(parameters).
     template <typename LightType>
     void loadLight(const Node& node, const char* what);
+    // The top-level "environment" (the root is where a "background" beside it is reported).
+    void loadEnvironment(const Node& root);
     void loadQuadLight(const Node& node, const char* what);
     void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
@@ -341,8 +348,8 @@ Scene SceneLoader::Reader::load() {
     const Node root{doc_.root(), "", "the scene"};
     requireObject(root, "the scene");
     checkKeys(root, "the scene",
-              {"render", "camera", "background", "ambient", "materials", "objects", "lights",
-               "radiosity"});
+              {"render", "camera", "background", "environment", "ambient", "materials", "objects",
+               "lights", "radiosity"});
 
     defaultMaterial_ = scene_.addMaterial(std::make_unique<BlinnPhongMaterial>());
     if (root.has("render")) loadRender(root["render"]);
@@ -350,6 +357,7 @@ Scene SceneLoader::Reader::load() {
     if (!root.has("camera")) fail(root, "the scene has no \"camera\"");
     loadCamera(root["camera"]);
     if (root.has("background")) scene_.setBackground(readColor(root["background"]));
+    if (root.has("environment")) loadEnvironment(root);
     if (root.has("ambient")) scene_.setAmbient(readColor(root["ambient"]));
     if (root.has("materials")) loadMaterials(root["materials"]);
     if (root.has("objects")) {
@@ -747,6 +755,30 @@ void SceneLoader::Reader::loadLight(const Node& node) {
     (this->*entry.load)(node, entry.what);
 }
 
+void SceneLoader::Reader::loadEnvironment(const Node& root) {
+    const Node node = root["environment"];
+    if (root.has("background"))
+        failAtKey(node,
+                  "\"environment\" replaces \"background\" (rays that leave the scene see "
+                  "the environment): give one of them");
+    const char* what = "\"environment\"";
+    requireObject(node, what);
+    checkKeys(node, what, EnvironmentLight::keys());
+    const Node file = require(node, "file", what);
+    const std::filesystem::path path = baseDir_ / readString(file);
+    std::optional<Image> map;
+    try {
+        map = ImageReader::read(path);
+    } catch (const InputError& e) {
+        fail(file, "environment map " + inQuotes(path.string()) + ": " + e.message());
+    }
+    auto environment =
+        EnvironmentLight::create(ObjectParameters(*this, node, what), *std::move(map));
+    environment->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
+                                                      : kDefaultShadowSamples);
+    scene_.setEnvironment(std::move(environment));
+}
+
 void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
     checkKeys(node, what, {"type", "corner", "edge1", "edge2", "radiance", "samples"});
     const Vec3 corner = readVec3(require(node, "corner", what));
@@ -783,8 +815,6 @@ const Material* SceneLoader::Reader::emitterOf(const Color& radiance) {
 
 void SceneLoader::Reader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
                                        std::unique_ptr<Light> light) {
-    // How many shadow rays the Whitted integrator traces towards it per shading point.
-    constexpr int kDefaultShadowSamples = 16;
     light->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
                                                 : kDefaultShadowSamples);
     surface->setAreaLight(light.get());

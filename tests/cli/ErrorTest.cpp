@@ -32,6 +32,9 @@ const std::string kValidScene = R"({
 }
 )";
 
+// The project's sky, for the environment's cases whose map must be read.
+const std::string kSky = LANCER_SOURCE_DIR "/scenes/skies/sky.hdr";
+
 struct ErrorCase {
     std::string name{};
     // The scene file is kValidScene with `replace` replaced by `with`, in which '@' marks where
@@ -310,6 +313,35 @@ const ErrorCase kErrorCases[] = {
      .replace = R"("max_depth": 3 })",
      .with = R"("max_depth": 3, "integrator": @"whited" })",
      .mentions = {R"("whited")", R"(did you mean "whitted"?)"}},
+    {.name = "EnvironmentMapMissing",
+     .replace = R"("lights": [)",
+     .with = R"("environment": { "file": @"no-such-sky.hdr" }, "lights": [)",
+     .mentions = {R"(environment map)", "no-such-sky.hdr"}},
+    {.name = "EnvironmentMapUnreadable",
+     .replace = R"("lights": [)",
+     .with = R"("environment": { "file": @"scene.json" }, "lights": [)",
+     .mentions = {R"(environment map)", "scene.json"}},
+    {.name = "EnvironmentAndBackgroundBoth",
+     .replace = R"("lights": [)",
+     .with = R"("background": 0.5, @"environment": { "file": "sky.hdr" }, "lights": [)",
+     .mentions = {R"("environment" replaces "background")"}},
+    {.name = "EnvironmentNegativeIntensity",
+     .replace = R"("lights": [)",
+     .with = R"("environment": { "file": ")" + kSky + R"(", "intensity": @-1 }, "lights": [)",
+     .mentions = {R"("intensity")"}},
+    {.name = "EnvironmentUnknownKey",
+     .replace = R"("lights": [)",
+     .with = R"("environment": { "file": "sky.hdr", @"intensty": 2 }, "lights": [)",
+     .mentions = {R"(unknown key "intensty" in "environment")", R"(did you mean "intensity"?)",
+                  R"(expected "file", "intensity", "rotate" or "samples")"}},
+    {.name = "EnvironmentZeroSamples",
+     .replace = R"("lights": [)",
+     .with = R"("environment": { "file": ")" + kSky + R"(", "samples": @0 }, "lights": [)",
+     .mentions = {R"("samples")"}},
+    {.name = "EnvironmentNotAnObject",
+     .replace = R"("lights": [)",
+     .with = R"("environment": @"sky.hdr", "lights": [)",
+     .mentions = {R"("environment")"}},
     {.name = "MissingRequiredKey",
      .replace = R"({ "type": "sphere", "center": [0, 1, 0], "radius": 1,)",
      .with = R"(@{ "type": "sphere", "center": [0, 1, 0],)",
