@@ -30,10 +30,12 @@
 #include "lights/PointLight.h"
 #include "lights/SpotLight.h"
 #include "materials/BlinnPhongMaterial.h"
+#include "materials/BumpMap.h"
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
 #include "materials/ImageTexture.h"
 #include "materials/MaterialParameters.h"
+#include "materials/NormalMap.h"
 #include "math/Transform.h"
 #include "render/Filter.h"
 #include "render/ToneMapper.h"
@@ -101,6 +103,8 @@ private:
     void loadCamera(const Node& node);
     void loadMaterials(const Node& node);
     std::unique_ptr<Material> loadMaterial(const Node& node);
+    // The normal or bump map of a material's object (normal_map, bump_map, bump_scale), or null.
+    std::shared_ptr<const ShadingNormalMap> loadShadingNormalMap(const Node& material);
     std::shared_ptr<const Texture> loadTexture(const Node& node);
     // A type of the "objects" or "lights" array, and the member reading its keys.
     struct ObjectType {
@@ -151,7 +155,12 @@ private:
                                          const std::optional<Transform>& transform);
     std::shared_ptr<const Mesh> loadMesh(const Node& file);
     // Image files are read once, however many materials (and models) use them.
-    std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
+    std::shared_ptr<const Texture> loadImageTexture(
+        const std::filesystem::path& path,
+        ImageReader::Content content = ImageReader::Content::Color);
+    // The image file that the string at `file` names; `what` names it in messages ("texture").
+    std::shared_ptr<const Texture> loadImageFile(const Node& file, const std::string& what,
+                                                 ImageReader::Content content);
     std::shared_ptr<const Texture> loadImageTextureFile(const Node& file);
     std::shared_ptr<const Texture> loadCheckerTexture(const Node& checker);
     Transform readTransform(const Node& node) const;
@@ -518,8 +527,27 @@ std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
     const MaterialType& entry = node.has("type")
                                     ? lookUp(materialTypes(), node["type"], "material type")
                                     : *materialTypes().find("blinn_phong");
-    checkKeys(node, "a material", withKeys({"type"}, entry.keys()));
-    return entry.create(ObjectParameters(*this, node, "a material"));
+    checkKeys(node, "a material",
+              withKeys({"type", "normal_map", "bump_map", "bump_scale"}, entry.keys()));
+    std::unique_ptr<Material> material = entry.create(ObjectParameters(*this, node, "a material"));
+    material->setShadingNormalMap(loadShadingNormalMap(node));
+    return material;
+}
+
+std::shared_ptr<const ShadingNormalMap> SceneLoader::Reader::loadShadingNormalMap(
+    const Node& material) {
+    if (material.has("normal_map") && material.has("bump_map"))
+        failAtKey(material["bump_map"],
+                  "\"normal_map\" and \"bump_map\" both give the shading normal; give one of them");
+    if (material.has("bump_scale") && !material.has("bump_map"))
+        failAtKey(material["bump_scale"], "\"bump_scale\" scales a \"bump_map\", which is missing");
+    if (material.has("normal_map"))
+        return std::make_shared<NormalMap>(
+            loadImageFile(material["normal_map"], "normal map", ImageReader::Content::Data));
+    if (!material.has("bump_map")) return nullptr;
+    const float scale = material.has("bump_scale") ? readNumber(material["bump_scale"]) : 1;
+    return std::make_shared<BumpMap>(
+        loadImageFile(material["bump_map"], "bump map", ImageReader::Content::Data), scale);
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node) {
@@ -532,11 +560,17 @@ std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTextureFile(const Node& file) {
+    return loadImageFile(file, "texture", ImageReader::Content::Color);
+}
+
+std::shared_ptr<const Texture> SceneLoader::Reader::loadImageFile(const Node& file,
+                                                                  const std::string& what,
+                                                                  ImageReader::Content content) {
     const std::filesystem::path path = baseDir_ / readString(file);
     try {
-        return loadImageTexture(path);
+        return loadImageTexture(path, content);
     } catch (const InputError& e) {
-        fail(file, "texture " + inQuotes(path.string()) + ": " + e.message());
+        fail(file, what + " " + inQuotes(path.string()) + ": " + e.message());
     }
 }
 
@@ -666,8 +700,9 @@ std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
     const std::string key = std::filesystem::weakly_canonical(path).string();
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
-        const auto loadTexture = [this](const std::filesystem::path& p) {
-            return loadImageTexture(p);
+        const auto loadTexture = [this](const std::filesystem::path& p,
+                                        ImageReader::Content content) {
+            return loadImageTexture(p, content);
         };
         std::shared_ptr<TriangleMesh> triangles = ObjLoader::load(path, loadTexture, warnings_);
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
@@ -681,10 +716,12 @@ std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTexture(
-    const std::filesystem::path& path) {
-    const std::string key = std::filesystem::weakly_canonical(path).string();
+    const std::filesystem::path& path, ImageReader::Content content) {
+    // One file may be both a colour texture and a map, read differently.
+    const std::string key = std::filesystem::weakly_canonical(path).string() +
+                            (content == ImageReader::Content::Data ? " (data)" : "");
     if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
-    std::shared_ptr<const Texture> texture = ImageReader::readTexture(path);
+    std::shared_ptr<const Texture> texture = ImageReader::readTexture(path, content);
     textures_[key] = texture;
     return texture;
 }
