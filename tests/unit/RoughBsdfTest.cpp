@@ -308,8 +308,8 @@ Hit hitFacingZ() {
 TEST(Bsdf, RoughnessZeroKeepsTheSmoothLobesAndRoughnessMakesRoughOnes) {
     const Hit hit = hitFacingZ();
     const BlinnPhongMaterial smooth(mirrorAndGlass(0)), rough(mirrorAndGlass(0.3f));
-    const Bsdf smoothBsdf(smooth, hit, Bsdf::Weights::AsGiven);
-    const Bsdf roughBsdf(rough, hit, Bsdf::Weights::AsGiven);
+    const Bsdf smoothBsdf(smooth, hit, hit.ns, Bsdf::Weights::AsGiven);
+    const Bsdf roughBsdf(rough, hit, hit.ns, Bsdf::Weights::AsGiven);
     std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
     EXPECT_EQ(smoothBsdf.specularRays(direction(30, 0), true, rays), 2u);
     EXPECT_EQ(smoothBsdf.roughLobeCount(), 0u);
@@ -327,7 +327,7 @@ TEST(Bsdf, RoughGlassRefractsThroughTheSurface) {
     p.reflection = Color(0);
     p.transmission = Color(1);
     const BlinnPhongMaterial glass(p);
-    const Bsdf bsdf(glass, hit);
+    const Bsdf bsdf(glass, hit, hit.ns);
     const Vec3 wo = direction(20, 0);
     const Vec3 refracted = *refract(wo, Vec3(0, 0, 1), kIor);
     EXPECT_GT(bsdf.f(wo, normalize(refracted)).g, 0);
@@ -343,7 +343,7 @@ TEST(Bsdf, RoughGlassRefractsThroughTheSurface) {
     }
     // 1 - F = 0.96 of the samples refract.
     EXPECT_GT(below, 900);
-    const Bsdf whitted(glass, hit, Bsdf::Weights::AsGiven);
+    const Bsdf whitted(glass, hit, hit.ns, Bsdf::Weights::AsGiven);
     std::array<SpecularRay, 2> traced;
     ASSERT_EQ(whitted.tracedRays(0, wo, {0.3f, 0.4f}, traced), 2u);
     EXPECT_GT(traced[0].direction.z, 0);
@@ -362,7 +362,7 @@ TEST(Bsdf, RoughLobesShadeDeltaLightsOnly) {
     p.transmission = Color(0);
     p.conductor = kGold;
     const BlinnPhongMaterial gold(p);
-    const Bsdf bsdf(gold, hit, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(gold, hit, hit.ns, Bsdf::Weights::AsGiven);
     const RoughConductorLobe lobe(Color(0.3f), 0.3f, kGold);
     const Vec3 wo = direction(30, 0), wi = direction(40, 180);
     const Color expected = lobe.f(wo, wi) * wi.z;
