@@ -194,6 +194,22 @@ TEST(CliAov, AlbedoIsTheCheckerSeenThroughAMirror) {
     EXPECT_GT(onTheFloor, 50);
 }
 
+// With no bounce allowed, the mirror's pixels end on the mirror, which has no diffuse colour.
+TEST(CliAov, AlbedoIsZeroWhereMaxDepthStopsTheRayAtAMirror) {
+    const TestCamera camera{{0, 0, 3}, {0, 0, 0}, 8, 6};
+    const nlohmann::json scene = sceneWith(
+        camera, {{"mirror", {{"diffuse", 0}, {"reflection", 1}}}, {"wall", {{"diffuse", 0.6}}}},
+        {{{"type", "plane"}, {"point", {0, 0, 0}}, {"normal", {0, 0, 1}}, {"material", "mirror"}},
+         {{"type", "plane"}, {"point", {0, 0, 5}}, {"normal", {0, 0, 1}}, {"material", "wall"}}});
+    const Image seen = renderWithAovs(scene, {}, "albedo").images.at("albedo");
+    const Image stopped = renderWithAovs(scene, {"--max-depth", "0"}, "albedo").images.at("albedo");
+    for (int y = 0; y < camera.height; ++y)
+        for (int x = 0; x < camera.width; ++x) {
+            expectRgb(seen, x, y, Vec3d(0.6), "the wall behind the camera, in the mirror");
+            expectRgb(stopped, x, y, Vec3d(0), "the mirror at max_depth 0");
+        }
+}
+
 // Glass splits a ray; the branch that carries the most light is followed: at normal incidence on
 // a slab of index 1.5, the refracted one (96% of the light), to the wall behind.
 TEST(CliAov, AlbedoIsTheWallSeenThroughGlass) {
