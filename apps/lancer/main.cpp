@@ -5,6 +5,8 @@
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -12,6 +14,7 @@
 #include <initializer_list>
 #include <iostream>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -57,6 +60,7 @@ struct Options {
     bool quiet = false;
     bool stats = false;
     std::optional<std::string> saveRadiosity, loadRadiosity;
+    std::optional<std::string> maxMemory;
 };
 
 int fail(int status, const std::string& message) {
@@ -146,10 +150,31 @@ std::uint64_t physicalMemory() {
                : 0;
 }
 
-std::string gigabytes(std::uint64_t bytes) {
+// "38.7 GB", or "12.0 MB" below a gigabyte.
+std::string memorySize(std::uint64_t bytes) {
+    const bool gigabytes = bytes >= 1000000000;
     char text[32];
-    std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+    std::snprintf(text, sizeof text, gigabytes ? "%.1f GB" : "%.1f MB",
+                  static_cast<double>(bytes) / (gigabytes ? 1e9 : 1e6));
     return text;
+}
+
+// A size as --max-memory takes it, in bytes: a whole or decimal number of bytes, or of kilo-,
+// mega-, giga- or terabytes with K, M, G or T (powers of 1000, as the messages count); none when
+// the text is not such a size, is 0 or is beyond 2^63.
+std::optional<std::uint64_t> parseMemorySize(const std::string& text) {
+    static const std::regex size(R"(([0-9]+(\.[0-9]*)?)([KMGT]?))", std::regex::icase);
+    std::smatch parts;
+    if (!std::regex_match(text, parts, size)) return std::nullopt;
+    const std::string unit = parts[3].str();
+    const std::size_t power =
+        unit.empty() ? 0
+                     : std::string("KMGT").find(
+                           static_cast<char>(std::toupper(static_cast<unsigned char>(unit[0])))) +
+                           1;
+    const double bytes = std::stod(parts[1].str()) * std::pow(1e3, static_cast<double>(power));
+    if (!(bytes >= 1 && bytes < 0x1p63)) return std::nullopt;
+    return static_cast<std::uint64_t>(bytes);
 }
 
 void printStatistics(const Scene& scene, const RenderCounters& counters) {
@@ -303,12 +328,18 @@ int run(const Options& options) {
     if (options.integrator) settings.integrator = *options.integrator;
     // The image's buffers are allocated before the render starts, and all at once: refuse an
     // image that cannot fit before the first of them (or the radiosity solve) takes its time.
+    // --max-memory replaces the machine's memory as the bound: higher where swap makes up the
+    // rest, lower to keep a render from crowding others out.
     const std::uint64_t needed = imageMemory(settings, output, aovs, options.window);
-    if (const std::uint64_t memory = physicalMemory(); memory > 0 && needed > memory)
+    const std::uint64_t allowed =
+        options.maxMemory ? *parseMemorySize(*options.maxMemory) : physicalMemory();
+    if (allowed > 0 && needed > allowed)
         return usageError("a " + std::to_string(settings.width) + " x " +
                           std::to_string(settings.height) + " image needs about " +
-                          gigabytes(needed) + " of memory for its buffers, more than the " +
-                          gigabytes(memory) + " this machine has");
+                          memorySize(needed) + " of memory for its buffers, more than the " +
+                          memorySize(allowed) +
+                          (options.maxMemory ? " --max-memory allows"
+                                             : " this machine has (--max-memory overrides)"));
 
     const ToneMapper toneMapper(settings.exposure, settings.tonemap);
 
@@ -457,6 +488,16 @@ int main(int argc, char** argv) {
                    "Radiosity: save the solution to FILE, for other views of the same scene");
     app.add_option("--load-radiosity", options.loadRadiosity,
                    "Radiosity: use the solution saved in FILE instead of solving again");
+    app.add_option("--max-memory", options.maxMemory,
+                   "The most memory the image's buffers may take, as 500M, 64G or 2T; "
+                   "default: the machine's memory")
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                return parseMemorySize(text)
+                           ? std::string()
+                           : "expected a size such as 500M, 64G or 2T, got \"" + text + "\"";
+            },
+            ""));
 
     try {
         app.parse(argc, argv);

@@ -26,13 +26,16 @@
 #include "io/ObjLoader.h"
 #include "lights/AreaLight.h"
 #include "lights/DirectionalLight.h"
+#include "lights/EnvironmentLight.h"
 #include "lights/PointLight.h"
 #include "lights/SpotLight.h"
 #include "materials/BlinnPhongMaterial.h"
+#include "materials/BumpMap.h"
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
 #include "materials/ImageTexture.h"
 #include "materials/MaterialParameters.h"
+#include "materials/NormalMap.h"
 #include "math/Transform.h"
 #include "render/Filter.h"
 #include "render/ToneMapper.h"
@@ -65,6 +68,10 @@ std::vector<std::string> withKeys(std::vector<std::string> common,
     return common;
 }
 
+// How many shadow rays the Whitted integrator traces towards an area light or the environment per
+// shading point, unless the scene says.
+constexpr int kDefaultShadowSamples = 16;
+
 }  // namespace
 
 class SceneLoader::Reader {
@@ -96,6 +103,8 @@ private:
     void loadCamera(const Node& node);
     void loadMaterials(const Node& node);
     std::unique_ptr<Material> loadMaterial(const Node& node);
+    // The normal or bump map of a material's object (normal_map, bump_map, bump_scale), or null.
+    std::shared_ptr<const ShadingNormalMap> loadShadingNormalMap(const Node& material);
     std::shared_ptr<const Texture> loadTexture(const Node& node);
     // A type of the "objects" or "lights" array, and the member reading its keys.
     struct ObjectType {
@@ -146,7 +155,12 @@ private:
                                          const std::optional<Transform>& transform);
     std::shared_ptr<const Mesh> loadMesh(const Node& file);
     // Image files are read once, however many materials (and models) use them.
-    std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
+    std::shared_ptr<const Texture> loadImageTexture(
+        const std::filesystem::path& path,
+        ImageReader::Content content = ImageReader::Content::Color);
+    // The image file that the string at `file` names; `what` names it in messages ("texture").
+    std::shared_ptr<const Texture> loadImageFile(const Node& file, const std::string& what,
+                                                 ImageReader::Content content);
     std::shared_ptr<const Texture> loadImageTextureFile(const Node& file);
     std::shared_ptr<const Texture> loadCheckerTexture(const Node& checker);
     Transform readTransform(const Node& node) const;
@@ -154,6 +168,8 @@ private:
     // A light that reads its own keys: LightType::keys() and LightType::create(parameters).
     template <typename LightType>
     void loadLight(const Node& node, const char* what);
+    // The top-level "environment" (the root is where a "background" beside it is reported).
+    void loadEnvironment(const Node& root);
     void loadQuadLight(const Node& node, const char* what);
     void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
@@ -311,8 +327,12 @@ Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::
     InputFile::check(path, "a scene file", "scene files", InputFile::kMaxSceneBytes);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "cannot open the scene file (does it exist?)");
-    // Read in blocks, so that a pipe that never ends stops at the limit too.
+    // Read in blocks, so that a pipe that never ends stops at the limit too; a file's text is
+    // given its size at once (not up to twice that by doubling).
     std::string text;
+    std::error_code sizeUnknown;
+    if (const std::uintmax_t size = std::filesystem::file_size(path, sizeUnknown); !sizeUnknown)
+        text.reserve(static_cast<std::size_t>(size));
     std::string block(1 << 16, '\0');
     while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
         text.append(block.data(), static_cast<std::size_t>(in.gcount()));
@@ -337,8 +357,8 @@ Scene SceneLoader::Reader::load() {
     const Node root{doc_.root(), "", "the scene"};
     requireObject(root, "the scene");
     checkKeys(root, "the scene",
-              {"render", "camera", "background", "ambient", "materials", "objects", "lights",
-               "radiosity"});
+              {"render", "camera", "background", "environment", "ambient", "materials", "objects",
+               "lights", "radiosity"});
 
     defaultMaterial_ = scene_.addMaterial(std::make_unique<BlinnPhongMaterial>());
     if (root.has("render")) loadRender(root["render"]);
@@ -346,6 +366,7 @@ Scene SceneLoader::Reader::load() {
     if (!root.has("camera")) fail(root, "the scene has no \"camera\"");
     loadCamera(root["camera"]);
     if (root.has("background")) scene_.setBackground(readColor(root["background"]));
+    if (root.has("environment")) loadEnvironment(root);
     if (root.has("ambient")) scene_.setAmbient(readColor(root["ambient"]));
     if (root.has("materials")) loadMaterials(root["materials"]);
     if (root.has("objects")) {
@@ -506,8 +527,27 @@ std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
     const MaterialType& entry = node.has("type")
                                     ? lookUp(materialTypes(), node["type"], "material type")
                                     : *materialTypes().find("blinn_phong");
-    checkKeys(node, "a material", withKeys({"type"}, entry.keys()));
-    return entry.create(ObjectParameters(*this, node, "a material"));
+    checkKeys(node, "a material",
+              withKeys({"type", "normal_map", "bump_map", "bump_scale"}, entry.keys()));
+    std::unique_ptr<Material> material = entry.create(ObjectParameters(*this, node, "a material"));
+    material->setShadingNormalMap(loadShadingNormalMap(node));
+    return material;
+}
+
+std::shared_ptr<const ShadingNormalMap> SceneLoader::Reader::loadShadingNormalMap(
+    const Node& material) {
+    if (material.has("normal_map") && material.has("bump_map"))
+        failAtKey(material["bump_map"],
+                  "\"normal_map\" and \"bump_map\" both give the shading normal; give one of them");
+    if (material.has("bump_scale") && !material.has("bump_map"))
+        failAtKey(material["bump_scale"], "\"bump_scale\" scales a \"bump_map\", which is missing");
+    if (material.has("normal_map"))
+        return std::make_shared<NormalMap>(
+            loadImageFile(material["normal_map"], "normal map", ImageReader::Content::Data));
+    if (!material.has("bump_map")) return nullptr;
+    const float scale = material.has("bump_scale") ? readNumber(material["bump_scale"]) : 1;
+    return std::make_shared<BumpMap>(
+        loadImageFile(material["bump_map"], "bump map", ImageReader::Content::Data), scale);
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node) {
@@ -520,11 +560,17 @@ std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTextureFile(const Node& file) {
+    return loadImageFile(file, "texture", ImageReader::Content::Color);
+}
+
+std::shared_ptr<const Texture> SceneLoader::Reader::loadImageFile(const Node& file,
+                                                                  const std::string& what,
+                                                                  ImageReader::Content content) {
     const std::filesystem::path path = baseDir_ / readString(file);
     try {
-        return loadImageTexture(path);
+        return loadImageTexture(path, content);
     } catch (const InputError& e) {
-        fail(file, "texture " + inQuotes(path.string()) + ": " + e.message());
+        fail(file, what + " " + inQuotes(path.string()) + ": " + e.message());
     }
 }
 
@@ -654,8 +700,9 @@ std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
     const std::string key = std::filesystem::weakly_canonical(path).string();
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
-        const auto loadTexture = [this](const std::filesystem::path& p) {
-            return loadImageTexture(p);
+        const auto loadTexture = [this](const std::filesystem::path& p,
+                                        ImageReader::Content content) {
+            return loadImageTexture(p, content);
         };
         std::shared_ptr<TriangleMesh> triangles = ObjLoader::load(path, loadTexture, warnings_);
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
@@ -669,10 +716,12 @@ std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTexture(
-    const std::filesystem::path& path) {
-    const std::string key = std::filesystem::weakly_canonical(path).string();
+    const std::filesystem::path& path, ImageReader::Content content) {
+    // One file may be both a colour texture and a map, read differently.
+    const std::string key = std::filesystem::weakly_canonical(path).string() +
+                            (content == ImageReader::Content::Data ? " (data)" : "");
     if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
-    std::shared_ptr<const Texture> texture = ImageReader::readTexture(path);
+    std::shared_ptr<const Texture> texture = ImageReader::readTexture(path, content);
     textures_[key] = texture;
     return texture;
 }
@@ -743,6 +792,30 @@ void SceneLoader::Reader::loadLight(const Node& node) {
     (this->*entry.load)(node, entry.what);
 }
 
+void SceneLoader::Reader::loadEnvironment(const Node& root) {
+    const Node node = root["environment"];
+    if (root.has("background"))
+        failAtKey(node,
+                  "\"environment\" replaces \"background\" (rays that leave the scene see "
+                  "the environment): give one of them");
+    const char* what = "\"environment\"";
+    requireObject(node, what);
+    checkKeys(node, what, EnvironmentLight::keys());
+    const Node file = require(node, "file", what);
+    const std::filesystem::path path = baseDir_ / readString(file);
+    std::optional<Image> map;
+    try {
+        map = ImageReader::read(path);
+    } catch (const InputError& e) {
+        fail(file, "environment map " + inQuotes(path.string()) + ": " + e.message());
+    }
+    auto environment =
+        EnvironmentLight::create(ObjectParameters(*this, node, what), *std::move(map));
+    environment->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
+                                                      : kDefaultShadowSamples);
+    scene_.setEnvironment(std::move(environment));
+}
+
 void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
     checkKeys(node, what, {"type", "corner", "edge1", "edge2", "radiance", "samples"});
     const Vec3 corner = readVec3(require(node, "corner", what));
@@ -779,8 +852,6 @@ const Material* SceneLoader::Reader::emitterOf(const Color& radiance) {
 
 void SceneLoader::Reader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
                                        std::unique_ptr<Light> light) {
-    // How many shadow rays the Whitted integrator traces towards it per shading point.
-    constexpr int kDefaultShadowSamples = 16;
     light->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
                                                 : kDefaultShadowSamples);
     surface->setAreaLight(light.get());
