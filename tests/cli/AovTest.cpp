@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "LancerRun.h"
+#include "PfmFile.h"
 #include "math/Vec3.h"
 #include "scene/Camera.h"
 
@@ -143,6 +144,21 @@ TEST(CliAov, PlaneDepthIsTheClosedFormAndItsNormalFacesTheCamera) {
             }
         EXPECT_GT(hits, 100) << height;
     }
+}
+
+// The normal output is the shading normal, normal map included: a constant map (0.8, 0.5, 0.9) is
+// n = 0.6 T + 0.8 N in the tangent frame, and on the plane y = 0 (uv = (x, z)) T is +x.
+TEST(CliAov, NormalIsTheMappedShadingNormal) {
+    const TempFolder maps;
+    writePfm(lancer::Image(4, 4, Color(0.8f, 0.5f, 0.9f)), maps / "tilt.pfm");
+    const TestCamera camera{{0.2, 2, 0.5}, {0, 0, 0}, 12, 9};
+    const nlohmann::json scene = sceneWith(
+        camera, {{"mapped", {{"diffuse", 0.5}, {"normal_map", (maps / "tilt.pfm").string()}}}},
+        {{{"type", "plane"}, {"point", {0, 0, 0}}, {"normal", {0, 1, 0}}, {"material", "mapped"}}});
+    const Image normal = renderWithAovs(scene, {}, "normal").images.at("normal");
+    for (int y = 0; y < camera.height; ++y)
+        for (int x = 0; x < camera.width; ++x)
+            expectRgb(normal, x, y, Vec3d(0.6, 0.8, 0), "mapped normal");
 }
 
 // A mirror (the plane z = 0) that shows a checkered floor (y = 0, uv = (x, z)): the albedo is the

@@ -617,7 +617,7 @@ const ErrorCase kErrorCases[] = {
      .prefix = "lancer: error: ",
      .mentions =
          {R"(unknown option "--sample" (did you mean "--spp"?); expected "--help", "--version", "--output")",
-          R"("--save-radiosity" or "--load-radiosity")"},
+          R"("--save-radiosity", "--load-radiosity" or "--max-memory")"},
      .arguments = {"--sample", "4"}},
     {.name = "MisspeltAovListsTheValidOnes",
      .prefix = "lancer: error: ",
