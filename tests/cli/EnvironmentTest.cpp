@@ -68,6 +68,16 @@ TEST(CliEnvironment, OneBrightTexelIsSeenWhereTheMappingSaysAndTurnedByRotate) {
     }
 }
 
+// An 8-bit map holds sRGB-encoded colour: a binary PPM whose every texel is 128 is seen as
+// ((128 / 255 + 0.055) / 1.055)^2.4 = 0.2158605 everywhere, times the intensity.
+TEST(CliEnvironment, AnEightBitMapIsSrgbDecoded) {
+    const TempFolder folder;
+    folder.write("map.ppm", "P6\n4 2\n255\n" + std::string(4 * 2 * 3, static_cast<char>(128)));
+    const double decoded = std::pow((128 / 255.0 + 0.055) / 1.055, 2.4);
+    for (const Vec3d& d : {Vec3d(0, 0, -1), Vec3d(0.6, 0.8, 0), Vec3d(0.1, -1, 0)})
+        EXPECT_NEAR(centreGreen(lookingAlong(d, folder / "map.ppm", "whitted")), 2 * decoded, 1e-5);
+}
+
 // Reflections and refractions that leave the scene see the map too: a mirror floor (y = 0) seen
 // along d mirrored in it shows the texel, times its reflectance 0.5; a glass slab of parallel
 // faces (the ray leaves it along the direction it entered) seen from below along d shows it
