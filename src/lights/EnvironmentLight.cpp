@@ -47,6 +47,15 @@ Image scaled(Image map, float intensity) {
 
 std::unique_ptr<EnvironmentLight> EnvironmentLight::create(const Parameters& parameters,
                                                            Image map) {
+    // Such a texel would make every pixel that sees or samples it NaN or infinite.
+    for (int y = 0; y < map.height(); ++y)
+        for (int x = 0; x < map.width(); ++x) {
+            const Color& c = map.at(x, y);
+            if (!c.isFinite() || c.r < 0 || c.g < 0 || c.b < 0)
+                parameters.fail("file", "the environment map's texel (" + std::to_string(x) + ", " +
+                                            std::to_string(y) +
+                                            ") is not a finite, non-negative colour");
+        }
     const float intensity =
         parameters.has("intensity") ? parameters.numberAbove("intensity", 0, true) : 1.0f;
     const float rotate = parameters.has("rotate") ? parameters.number("rotate") : 0.0f;

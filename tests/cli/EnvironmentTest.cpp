@@ -78,6 +78,26 @@ TEST(CliEnvironment, AnEightBitMapIsSrgbDecoded) {
         EXPECT_NEAR(centreGreen(lookingAlong(d, folder / "map.ppm", "whitted")), 2 * decoded, 1e-5);
 }
 
+// A negative texel (a float map may hold one) would make the sampling density negative and
+// subtract light: the map is refused with one line naming the scene's "file" value. (Infinite
+// and NaN texels are read as 0 by the image reader, as for textures.)
+TEST(CliEnvironment, AMapWithANegativeTexelIsRefused) {
+    for (const float bad : {-1.0f, -1e-30f}) {
+        const TempFolder folder;
+        lancer::Image map(4, 2, Color(1));
+        map.at(1, 0).g = bad;
+        writePfm(map, folder / "map.pfm");
+        folder.write("scene.json", R"({ "camera": { "position": [0, 0, 0], "look_at": [0, 0, -1] },
+  "environment": { "file": "map.pfm" } })");
+        const RunResult run = runLancer({"scene.json", "-o", "out.png"}, folder.path());
+        EXPECT_EQ(run.exitStatus, 2) << run;
+        ASSERT_EQ(run.errorLines().size(), 1u) << run;
+        EXPECT_EQ(run.errorLines()[0],
+                  "scene.json:2:28: error: the environment map's texel (1, 0) is not a finite, "
+                  "non-negative colour");
+    }
+}
+
 // Reflections and refractions that leave the scene see the map too: a mirror floor (y = 0) seen
 // along d mirrored in it shows the texel, times its reflectance 0.5; a glass slab of parallel
 // faces (the ray leaves it along the direction it entered) seen from below along d shows it
