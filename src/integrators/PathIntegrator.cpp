@@ -101,7 +101,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, float, Sampler& sampler,
         const Vec2 uBsdf = sampler.get2D();
         const float uRoulette = sampler.get1D();
 
-        const Bsdf bsdf(material, hit);
+        const Bsdf bsdf(material, hit, wo);
         if (bsdf.hasNonDeltaLobe())
             L += throughput * sampleOneLight(hit, bsdf, wo, uLightChoice, uLight, rayCount);
 

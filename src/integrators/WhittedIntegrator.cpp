@@ -59,7 +59,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     const Vec3 wo = -normalize(ray.direction);
     // Shade the side the ray arrived on.
     const bool front = hit.frontFace(ray);
-    const Bsdf bsdf(material, hit, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(material, hit, wo, Bsdf::Weights::AsGiven);
 
     Color L;
     if (front || hit.shape->emitsOnBothSides()) L += material.emission();

@@ -30,12 +30,15 @@
 #include "lights/PointLight.h"
 #include "lights/SpotLight.h"
 #include "materials/BlinnPhongMaterial.h"
+#include "materials/BumpMap.h"
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
 #include "materials/ImageTexture.h"
 #include "materials/MaterialParameters.h"
+#include "materials/NormalMap.h"
 #include "math/Transform.h"
 #include "render/Filter.h"
+#include "render/ToneMapper.h"
 #include "util/DidYouMean.h"
 #include "util/Parameters.h"
 #include "util/Registry.h"
@@ -100,6 +103,8 @@ private:
     void loadCamera(const Node& node);
     void loadMaterials(const Node& node);
     std::unique_ptr<Material> loadMaterial(const Node& node);
+    // The normal or bump map of a material's object (normal_map, bump_map, bump_scale), or null.
+    std::shared_ptr<const ShadingNormalMap> loadShadingNormalMap(const Node& material);
     std::shared_ptr<const Texture> loadTexture(const Node& node);
     // A type of the "objects" or "lights" array, and the member reading its keys.
     struct ObjectType {
@@ -150,7 +155,12 @@ private:
                                          const std::optional<Transform>& transform);
     std::shared_ptr<const Mesh> loadMesh(const Node& file);
     // Image files are read once, however many materials (and models) use them.
-    std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
+    std::shared_ptr<const Texture> loadImageTexture(
+        const std::filesystem::path& path,
+        ImageReader::Content content = ImageReader::Content::Color);
+    // The image file that the string at `file` names; `what` names it in messages ("texture").
+    std::shared_ptr<const Texture> loadImageFile(const Node& file, const std::string& what,
+                                                 ImageReader::Content content);
     std::shared_ptr<const Texture> loadImageTextureFile(const Node& file);
     std::shared_ptr<const Texture> loadCheckerTexture(const Node& checker);
     Transform readTransform(const Node& node) const;
@@ -311,6 +321,7 @@ std::vector<SceneLoader::Vocabulary> SceneLoader::vocabulary() {
             {"materials", Reader::materialTypes().names()},
             {"textures", Reader::textureTypes().names()},
             {"filters", Filter::types().names()},
+            {"tone operators", ToneMapper::operators().names()},
             {"integrators", IntegratorRegistry::table().names()}};
 }
 
@@ -318,8 +329,12 @@ Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::
     InputFile::check(path, "a scene file", "scene files", InputFile::kMaxSceneBytes);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "cannot open the scene file (does it exist?)");
-    // Read in blocks, so that a pipe that never ends stops at the limit too.
+    // Read in blocks, so that a pipe that never ends stops at the limit too; a file's text is
+    // given its size at once (not up to twice that by doubling).
     std::string text;
+    std::error_code sizeUnknown;
+    if (const std::uintmax_t size = std::filesystem::file_size(path, sizeUnknown); !sizeUnknown)
+        text.reserve(static_cast<std::size_t>(size));
     std::string block(1 << 16, '\0');
     while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
         text.append(block.data(), static_cast<std::size_t>(in.gcount()));
@@ -377,7 +392,8 @@ Scene SceneLoader::Reader::load() {
 void SceneLoader::Reader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
     checkKeys(node, "\"render\"",
-              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive"});
+              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive",
+               "exposure", "tonemap"});
     RenderSettings& settings = scene_.settings();
     if (node.has("width"))
         settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
@@ -392,6 +408,16 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     }
     if (node.has("filter")) loadFilter(node["filter"]);
     if (node.has("adaptive")) loadAdaptive(node, node["adaptive"]);
+    if (node.has("exposure")) {
+        const Node exposure = node["exposure"];
+        settings.exposure = readNumber(exposure);
+        constexpr int limit = RenderSettings::kMaxExposure;
+        if (std::abs(settings.exposure) > static_cast<float>(limit))
+            fail(exposure, "\"exposure\" must be between -" + std::to_string(limit) + " and " +
+                               std::to_string(limit) + " stops");
+    }
+    if (node.has("tonemap"))
+        settings.tonemap = lookUp(ToneMapper::operators(), node["tonemap"], "tonemap").name;
 }
 
 void SceneLoader::Reader::loadFilter(const Node& node) {
@@ -503,8 +529,27 @@ std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
     const MaterialType& entry = node.has("type")
                                     ? lookUp(materialTypes(), node["type"], "material type")
                                     : *materialTypes().find("blinn_phong");
-    checkKeys(node, "a material", withKeys({"type"}, entry.keys()));
-    return entry.create(ObjectParameters(*this, node, "a material"));
+    checkKeys(node, "a material",
+              withKeys({"type", "normal_map", "bump_map", "bump_scale"}, entry.keys()));
+    std::unique_ptr<Material> material = entry.create(ObjectParameters(*this, node, "a material"));
+    material->setShadingNormalMap(loadShadingNormalMap(node));
+    return material;
+}
+
+std::shared_ptr<const ShadingNormalMap> SceneLoader::Reader::loadShadingNormalMap(
+    const Node& material) {
+    if (material.has("normal_map") && material.has("bump_map"))
+        failAtKey(material["bump_map"],
+                  "\"normal_map\" and \"bump_map\" both give the shading normal; give one of them");
+    if (material.has("bump_scale") && !material.has("bump_map"))
+        failAtKey(material["bump_scale"], "\"bump_scale\" scales a \"bump_map\", which is missing");
+    if (material.has("normal_map"))
+        return std::make_shared<NormalMap>(
+            loadImageFile(material["normal_map"], "normal map", ImageReader::Content::Data));
+    if (!material.has("bump_map")) return nullptr;
+    const float scale = material.has("bump_scale") ? readNumber(material["bump_scale"]) : 1;
+    return std::make_shared<BumpMap>(
+        loadImageFile(material["bump_map"], "bump map", ImageReader::Content::Data), scale);
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node) {
@@ -517,11 +562,17 @@ std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTextureFile(const Node& file) {
+    return loadImageFile(file, "texture", ImageReader::Content::Color);
+}
+
+std::shared_ptr<const Texture> SceneLoader::Reader::loadImageFile(const Node& file,
+                                                                  const std::string& what,
+                                                                  ImageReader::Content content) {
     const std::filesystem::path path = baseDir_ / readString(file);
     try {
-        return loadImageTexture(path);
+        return loadImageTexture(path, content);
     } catch (const InputError& e) {
-        fail(file, "texture " + inQuotes(path.string()) + ": " + e.message());
+        fail(file, what + " " + inQuotes(path.string()) + ": " + e.message());
     }
 }
 
@@ -651,8 +702,9 @@ std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
     const std::string key = std::filesystem::weakly_canonical(path).string();
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
-        const auto loadTexture = [this](const std::filesystem::path& p) {
-            return loadImageTexture(p);
+        const auto loadTexture = [this](const std::filesystem::path& p,
+                                        ImageReader::Content content) {
+            return loadImageTexture(p, content);
         };
         std::shared_ptr<TriangleMesh> triangles = ObjLoader::load(path, loadTexture, warnings_);
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
@@ -666,10 +718,12 @@ std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTexture(
-    const std::filesystem::path& path) {
-    const std::string key = std::filesystem::weakly_canonical(path).string();
+    const std::filesystem::path& path, ImageReader::Content content) {
+    // One file may be both a colour texture and a map, read differently.
+    const std::string key = std::filesystem::weakly_canonical(path).string() +
+                            (content == ImageReader::Content::Data ? " (data)" : "");
     if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
-    std::shared_ptr<const Texture> texture = ImageReader::readTexture(path);
+    std::shared_ptr<const Texture> texture = ImageReader::readTexture(path, content);
     textures_[key] = texture;
     return texture;
 }

@@ -9,8 +9,8 @@
 
 namespace lancer {
 
-Bsdf::Bsdf(const Material& material, const Hit& hit, Weights weights)
-    : frame_(Frame::fromZ(hit.ns)), ng_(hit.ng) {
+Bsdf::Bsdf(const Material& material, const Hit& hit, const Vec3& wo, Weights weights)
+    : frame_(Frame::fromZ(material.shadingNormal(hit, wo))), ng_(hit.ng) {
     material.addLobes(hit, *this);
     weighLobes(weights);
 }

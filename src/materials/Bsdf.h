@@ -43,7 +43,10 @@ public:
         AsGiven,           // the scene format's equation (Whitted, radiosity): not for sample()
     };
 
-    Bsdf(const Material& material, const Hit& hit, Weights weights = Weights::EnergyConserving);
+    // The frame's normal is the material's shading normal at the hit, seen from wo (the
+    // direction towards the viewer), which a normal or bump map perturbs.
+    Bsdf(const Material& material, const Hit& hit, const Vec3& wo,
+         Weights weights = Weights::EnergyConserving);
     // The lobes point into the object's own storage.
     Bsdf(const Bsdf&) = delete;
     Bsdf& operator=(const Bsdf&) = delete;

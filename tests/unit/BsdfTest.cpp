@@ -212,6 +212,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 // A material made of the given weights, seen at a hit whose normals are +z (or the shading normal
 // tilted away from the geometric one by `tiltDegrees`).
+// The Bsdfs of these materials are given the shading normal as the viewer's direction: only a
+// normal or bump map, which these have none of, reads it.
 struct MaterialAtHit {
     BlinnPhongMaterial material;
     Hit hit;
@@ -236,7 +238,7 @@ struct MaterialAtHit {
 
 TEST(Bsdf, MixtureOfDiffuseAndHighlightFollowsItsPdf) {
     const MaterialAtHit m(0.3f, 0.5f, 40, 0, 0);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     for (const float theta : {0.0f, 50.0f, 120.0f}) {
         const Vec3 wo = direction(theta, 70);
         expectChiSquarePasses(
@@ -253,7 +255,7 @@ TEST(Bsdf, MixtureOfDiffuseAndHighlightFollowsItsPdf) {
 
 TEST(Bsdf, SampledValuesAreThoseOfFAndPdf) {
     const MaterialAtHit m(0.3f, 0.5f, 40, 0, 0);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     UniformSource random(3);
     const Vec3 wo = direction(35, 10);
     for (int k = 0; k < 1000; ++k) {
@@ -329,7 +331,7 @@ TEST(BlinnPhongLobe, SampleWeightsNeverExceedKsAndAverageToTheAlbedo) {
 
 TEST(Bsdf, ReflectionIsReciprocal) {
     const MaterialAtHit m(0.4f, 0.5f, 25, 0, 0);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     const LambertianLobe lambertian(Color(0.7f));
     const BlinnPhongLobe blinnPhong(Color(0.7f), 60);
     UniformSource random(5);
@@ -348,7 +350,7 @@ TEST(Bsdf, ReflectionIsReciprocal) {
 // Weights above 1 in total are scaled down together: a white furnace on the whole BSDF.
 TEST(Bsdf, CombinedWeightsAboveOneAreScaledToConserveEnergy) {
     const MaterialAtHit m(0.9f, 0.6f, 20, 0.5f, 0, 0);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     UniformSource random(9);
     constexpr int kSamples = 200'000;
     for (const float theta : {0.0f, 45.0f, 80.0f}) {
@@ -416,7 +418,7 @@ TEST(DielectricLobe, ConservesEnergyAndSplitsByFresnel) {
 // A smooth-shading normal must not let a reflection lobe send light through the true surface.
 TEST(Bsdf, NoReflectionThroughTheGeometricSurface) {
     const MaterialAtHit m(0.8f, 0, 32, 0, 0, 30);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     // Above the shading horizon, below the geometric one.
     const Vec3 wo = direction(45, 0);
     const Vec3 wi = direction(100, 0);
@@ -435,7 +437,7 @@ TEST(Bsdf, NoReflectionThroughTheGeometricSurface) {
 // scaled): kd max(0, n.L) + ks max(0, n.h)^n, nothing for light behind the viewer's side.
 TEST(Bsdf, LocalResponseIsTheSceneFormatsEquation) {
     const MaterialAtHit m(0.7f, 0.6f, 20, 0.3f, 0);
-    const Bsdf bsdf(m.material, m.hit, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns, Bsdf::Weights::AsGiven);
     const Vec3 wo = direction(30, 0), wi = direction(50, 160);
     const float cosL = wi.z, cosH = normalize(wo + wi).z;
     const Color expected = Color(0.7f) * cosL + Color(0.6f) * std::pow(cosH, 20.0f);
@@ -452,7 +454,7 @@ TEST(Bsdf, LocalResponseIsTheSceneFormatsEquation) {
 // Snell's direction; under total internal reflection, the reflection alone with kr + kt.
 TEST(Bsdf, SpecularRaysMergeTheReflectionsAndSplitGlassByFresnel) {
     const MaterialAtHit m(0, 0, 20, 0.25f, 0.5f);
-    const Bsdf bsdf(m.material, m.hit, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns, Bsdf::Weights::AsGiven);
     EXPECT_FALSE(bsdf.hasGlossyLobe());
     std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
     const Vec3 wo = direction(40, 10);
@@ -475,7 +477,7 @@ TEST(Bsdf, SpecularRaysMergeTheReflectionsAndSplitGlassByFresnel) {
 // Glass alone, with no mirror: the reflection is its Fresnel share, ahead of the refraction.
 TEST(Bsdf, SpecularRaysOfGlassAloneStartWithItsReflection) {
     const MaterialAtHit m(0.5f, 0, 20, 0, 1);
-    const Bsdf bsdf(m.material, m.hit, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns, Bsdf::Weights::AsGiven);
     std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
     const Vec3 wo = direction(0, 0);
     ASSERT_EQ(bsdf.specularRays(wo, true, rays), 2u);
@@ -483,7 +485,8 @@ TEST(Bsdf, SpecularRaysOfGlassAloneStartWithItsReflection) {
     EXPECT_NEAR(rays[1].direction.z, -1, 1e-6f);
     // A diffuse material alone traces nothing.
     const MaterialAtHit matte(0.5f, 0, 20, 0, 0);
-    EXPECT_EQ(Bsdf(matte.material, matte.hit, Bsdf::Weights::AsGiven).specularRays(wo, true, rays),
+    EXPECT_EQ(Bsdf(matte.material, matte.hit, matte.hit.ns, Bsdf::Weights::AsGiven)
+                  .specularRays(wo, true, rays),
               0u);
 }
 
