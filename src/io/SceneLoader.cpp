@@ -69,7 +69,7 @@ std::vector<std::string> withKeys(std::vector<std::string> common,
 }
 
 // How many shadow rays the Whitted integrator traces towards an area light or the environment per
-// shading point, unless the scene says.
+// shading point, unless the light's "samples" says.
 constexpr int kDefaultShadowSamples = 16;
 
 }  // namespace
@@ -170,6 +170,8 @@ private:
     void loadLight(const Node& node, const char* what);
     // The top-level "environment" (the root is where a "background" beside it is reported).
     void loadEnvironment(const Node& root);
+    // A light's "samples": the Whitted integrator's shadow rays towards it per shading point.
+    int readShadowSamples(const Node& node) const;
     void loadQuadLight(const Node& node, const char* what);
     void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
@@ -811,9 +813,12 @@ void SceneLoader::Reader::loadEnvironment(const Node& root) {
     }
     auto environment =
         EnvironmentLight::create(ObjectParameters(*this, node, what), *std::move(map));
-    environment->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
-                                                      : kDefaultShadowSamples);
+    environment->setShadowSamples(readShadowSamples(node));
     scene_.setEnvironment(std::move(environment));
+}
+
+int SceneLoader::Reader::readShadowSamples(const Node& node) const {
+    return node.has("samples") ? readInt(node["samples"], 1) : kDefaultShadowSamples;
 }
 
 void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
@@ -852,8 +857,7 @@ const Material* SceneLoader::Reader::emitterOf(const Color& radiance) {
 
 void SceneLoader::Reader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
                                        std::unique_ptr<Light> light) {
-    light->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
-                                                : kDefaultShadowSamples);
+    light->setShadowSamples(readShadowSamples(node));
     surface->setAreaLight(light.get());
     scene_.addShape(std::move(surface));
     scene_.addLight(std::move(light));
