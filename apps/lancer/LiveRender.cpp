@@ -65,7 +65,7 @@ RenderResult LiveRender::stop() {
     return result;
 }
 
-int LiveRender::run(const std::function<int(const RenderResult&)>& deliver) {
+int LiveRender::run(const std::function<int(RenderResult&)>& deliver) {
     std::optional<int> status;  // what deliver returned, once it was called
     start();
     for (;;) {
@@ -90,7 +90,7 @@ int LiveRender::run(const std::function<int(const RenderResult&)>& deliver) {
             }
         }
         if (finished_ && thread_.joinable()) {
-            const RenderResult result = stop();
+            RenderResult result = stop();
             if (!status) status = deliver(result);
             // Once the output is written: a title saying "done" means the file is there.
             char done[96];
@@ -101,7 +101,7 @@ int LiveRender::run(const std::function<int(const RenderResult&)>& deliver) {
         // While no render has completed one runs, so there is something to deliver.
         if (close) {
             if (thread_.joinable()) {
-                const RenderResult result = stop();
+                RenderResult result = stop();
                 if (!status) status = deliver(result);
             }
             return *status;
@@ -122,7 +122,9 @@ void LiveRender::saveSnapshot() {
                 output_.extension().string());
     while (std::filesystem::exists(path));
     try {
-        ImageWriter::write(viewer_.image(), path);
+        Image image = viewer_.image();
+        viewer_.toneMapper().mapForOutput(image, ImageWriter::storesLinear(path));
+        ImageWriter::write(image, path);
         if (!quiet_) std::cerr << "lancer: snapshot written to " << path.string() << '\n';
     } catch (const std::exception& e) {
         std::cerr << "lancer: error: " << e.what() << '\n';

@@ -5,6 +5,8 @@
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <cctype>
+#include <cmath>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
@@ -12,6 +14,7 @@
 #include <initializer_list>
 #include <iostream>
 #include <optional>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -28,7 +31,9 @@
 #include "io/ImageWriter.h"
 #include "io/SceneLoader.h"
 #include "radiosity/RadiositySolver.h"
+#include "render/Aov.h"
 #include "render/Renderer.h"
+#include "render/ToneMapper.h"
 #include "scene/InputError.h"
 #include "scene/RenderSettings.h"
 #include "util/DidYouMean.h"
@@ -50,10 +55,12 @@ struct Options {
     int threads = 0;
     std::uint64_t seed = 0;
     std::optional<std::string> crop;
+    std::optional<std::string> aovs;  // --aov's list
     bool window = false;
     bool quiet = false;
     bool stats = false;
     std::optional<std::string> saveRadiosity, loadRadiosity;
+    std::optional<std::string> maxMemory;
 };
 
 int fail(int status, const std::string& message) {
@@ -118,14 +125,19 @@ std::string unexpectedArguments(const CLI::App& app, int argc, char** argv,
     return std::string(error.what()) + " (see lancer --help)";
 }
 
-// The memory the image's buffers take, in bytes: the render's film and what the writer needs;
-// with the window, also its preview film, its own copy and the 8-bit pixels it shows (ours and
-// SDL's).
-std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output, bool window) {
+// The memory the image's buffers take, in bytes: the render's film and what the writer needs, and
+// the same for each auxiliary output; with the window, also its preview film, its own copy and
+// the 8-bit pixels it shows (ours and SDL's).
+std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output,
+                          const std::vector<const Aov*>& aovs, bool window) {
     const std::uint64_t pixels =
         static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
     std::uint64_t bytes =
         pixels * sizeof(Color) + ImageWriter::memoryNeeded(output, settings.width, settings.height);
+    for (const Aov* aov : aovs)
+        bytes +=
+            pixels * sizeof(Color) +
+            ImageWriter::memoryNeeded(aov->pathBeside(output), settings.width, settings.height);
     if (window) bytes += pixels * (2 * sizeof(Color) + 2 * 3);
     return bytes;
 }
@@ -138,10 +150,31 @@ std::uint64_t physicalMemory() {
                : 0;
 }
 
-std::string gigabytes(std::uint64_t bytes) {
+// "38.7 GB", or "12.0 MB" below a gigabyte.
+std::string memorySize(std::uint64_t bytes) {
+    const bool gigabytes = bytes >= 1000000000;
     char text[32];
-    std::snprintf(text, sizeof text, "%.1f GB", static_cast<double>(bytes) / 1e9);
+    std::snprintf(text, sizeof text, gigabytes ? "%.1f GB" : "%.1f MB",
+                  static_cast<double>(bytes) / (gigabytes ? 1e9 : 1e6));
     return text;
+}
+
+// A size as --max-memory takes it, in bytes: a whole or decimal number of bytes, or of kilo-,
+// mega-, giga- or terabytes with K, M, G or T (powers of 1000, as the messages count); none when
+// the text is not such a size, is 0 or is beyond 2^63.
+std::optional<std::uint64_t> parseMemorySize(const std::string& text) {
+    static const std::regex size(R"(([0-9]+(\.[0-9]*)?)([KMGT]?))", std::regex::icase);
+    std::smatch parts;
+    if (!std::regex_match(text, parts, size)) return std::nullopt;
+    const std::string unit = parts[3].str();
+    const std::size_t power =
+        unit.empty() ? 0
+                     : std::string("KMGT").find(
+                           static_cast<char>(std::toupper(static_cast<unsigned char>(unit[0])))) +
+                           1;
+    const double bytes = std::stod(parts[1].str()) * std::pow(1e3, static_cast<double>(power));
+    if (!(bytes >= 1 && bytes < 0x1p63)) return std::nullopt;
+    return static_cast<std::uint64_t>(bytes);
 }
 
 void printStatistics(const Scene& scene, const RenderCounters& counters) {
@@ -272,6 +305,14 @@ int run(const Options& options) {
     if (fs::is_directory(output))
         return fail(kExitFailure, "lancer: error: " + output.string() +
                                       ": cannot write the image (it is a folder)");
+    std::vector<const Aov*> aovs;
+    if (options.aovs) {
+        try {
+            aovs = Aov::parseList(*options.aovs);
+        } catch (const std::invalid_argument& e) {
+            return usageError(e.what());
+        }
+    }
 
     std::vector<std::string> warnings;
     Scene scene = SceneLoader::loadFile(options.scene, warnings);
@@ -287,16 +328,25 @@ int run(const Options& options) {
     if (options.integrator) settings.integrator = *options.integrator;
     // The image's buffers are allocated before the render starts, and all at once: refuse an
     // image that cannot fit before the first of them (or the radiosity solve) takes its time.
-    const std::uint64_t needed = imageMemory(settings, output, options.window);
-    if (const std::uint64_t memory = physicalMemory(); memory > 0 && needed > memory)
+    // --max-memory replaces the machine's memory as the bound: higher where swap makes up the
+    // rest, lower to keep a render from crowding others out.
+    const std::uint64_t needed = imageMemory(settings, output, aovs, options.window);
+    const std::uint64_t allowed =
+        options.maxMemory ? *parseMemorySize(*options.maxMemory) : physicalMemory();
+    if (allowed > 0 && needed > allowed)
         return usageError("a " + std::to_string(settings.width) + " x " +
                           std::to_string(settings.height) + " image needs about " +
-                          gigabytes(needed) + " of memory for its buffers, more than the " +
-                          gigabytes(memory) + " this machine has");
+                          memorySize(needed) + " of memory for its buffers, more than the " +
+                          memorySize(allowed) +
+                          (options.maxMemory ? " --max-memory allows"
+                                             : " this machine has (--max-memory overrides)"));
+
+    const ToneMapper toneMapper(settings.exposure, settings.tonemap);
 
     RenderOptions renderOptions;
     renderOptions.threads = options.threads;
     renderOptions.seed = options.seed;
+    renderOptions.aovs = aovs;
     if (options.crop) {
         std::string error;
         renderOptions.crop = parseCrop(*options.crop, settings.width, settings.height, error);
@@ -310,7 +360,7 @@ int run(const Options& options) {
     if (options.window) {
         std::string error;
         viewer = Viewer::open("lancer: " + fs::path(options.scene).filename().string(),
-                              settings.width, settings.height, error);
+                              settings.width, settings.height, toneMapper, error);
         if (!viewer && !options.quiet)
             std::cerr << "lancer: warning: --window: " << error << "; rendering without it\n";
     }
@@ -333,10 +383,14 @@ int run(const Options& options) {
         return InterruptSignals::exitStatus();
     }
 
-    // Writes the image as soon as its render ends; returns the exit status.
-    const auto deliver = [&](const RenderResult& result) {
+    // Writes the image and its auxiliary outputs as soon as its render ends; returns the exit
+    // status.
+    const auto deliver = [&](RenderResult& result) {
         InterruptSignals::setPhase(InterruptSignals::Phase::Saving);
+        toneMapper.mapForOutput(result.film, ImageWriter::storesLinear(output));
         ImageWriter::write(result.film, output);
+        for (std::size_t i = 0; i < aovs.size(); ++i)
+            ImageWriter::write(result.aovFilms[i], aovs[i]->pathBeside(output));
         InterruptSignals::setPhase(InterruptSignals::Phase::Working);
         if (result.interrupted) {
             std::cerr << "lancer: interrupted; the part rendered so far was written to "
@@ -363,7 +417,7 @@ int run(const Options& options) {
     renderOptions.onTileDone = [&](const FinishedTile& tile) {
         progress.update(tile.tilesDone, tile.tilesTotal);
     };
-    const RenderResult result = Renderer(scene, *integrator).render(renderOptions);
+    RenderResult result = Renderer(scene, *integrator).render(renderOptions);
     progress.finish();
     return deliver(result);
 }
@@ -389,7 +443,8 @@ int main(int argc, char** argv) {
     app.add_option(
         "-o,--output", options.output,
         "Output image; the extension picks the format: .png .jpg .bmp .tga .tif (8-bit sRGB), "
-        ".exr .hdr .pfm (linear float). Default: the scene's name with .png");
+        ".exr .hdr .pfm (linear float); the scene's exposure and tonemap apply. Default: the "
+        "scene's name with .png");
     app.add_option("--width", options.width, "Image width in pixels (overrides the scene)")
         ->check(CLI::Range(1, RenderSettings::kMaxImageSide));
     app.add_option("--height", options.height, "Image height in pixels (overrides the scene)")
@@ -421,6 +476,10 @@ int main(int argc, char** argv) {
             ""));
     app.add_option("--crop", options.crop,
                    "Render only the pixels X0,Y0,X1,Y1 (inclusive-exclusive)");
+    app.add_option("--aov", options.aovs,
+                   "Also write auxiliary outputs beside the image, OUT.NAME.exr, for a denoiser: "
+                   "any of " +
+                       Aov::types().quotedNames() + ", separated by commas");
     app.add_flag("--window", options.window, "Show the image in a window while it renders");
     app.add_flag("--quiet", options.quiet, "No progress bar or summary, only errors");
     app.add_flag("--stats", options.stats,
@@ -429,6 +488,16 @@ int main(int argc, char** argv) {
                    "Radiosity: save the solution to FILE, for other views of the same scene");
     app.add_option("--load-radiosity", options.loadRadiosity,
                    "Radiosity: use the solution saved in FILE instead of solving again");
+    app.add_option("--max-memory", options.maxMemory,
+                   "The most memory the image's buffers may take, as 500M, 64G or 2T; "
+                   "default: the machine's memory")
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                return parseMemorySize(text)
+                           ? std::string()
+                           : "expected a size such as 500M, 64G or 2T, got \"" + text + "\"";
+            },
+            ""));
 
     try {
         app.parse(argc, argv);

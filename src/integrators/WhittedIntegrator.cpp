@@ -49,7 +49,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     const Ray& ray = path.ray;
     ++rayCount;
     std::optional<Hit> found = scene_.intersect(ray, kInfinity);
-    if (!found) return scene_.background();
+    if (!found) return scene_.background(ray.direction);
     Hit& hit = *found;
     // Directions are unit vectors, so t is a distance.
     const float distance = path.distance + hit.t;

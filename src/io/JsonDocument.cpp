@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <charconv>
 #include <cstring>
 #include <iterator>
+#include <limits>
 #include <vector>
+
+#include "io/InputFile.h"
 
 namespace lancer {
 
@@ -69,7 +73,7 @@ std::string JsonDocument::child(const std::string& parent, std::size_t index) {
     return parent + "/" + std::to_string(index);
 }
 
-// SAX handler for nlohmann::json that builds no tree, only the map from JSON pointer to position.
+// SAX handler for nlohmann::json that builds no tree, only the positions of the values and keys.
 class JsonPositionRecorder {
 public:
     using json = nlohmann::json;
@@ -80,17 +84,22 @@ public:
     using binary_t = json::binary_t;
 
     JsonPositionRecorder(const std::string& text, const std::size_t& lastRead, JsonDocument& doc)
-        : text_(text), lastRead_(lastRead), doc_(doc) {
-        lineStarts_.push_back(0);
-        for (std::size_t i = 0; i < text.size(); ++i)
-            if (text[i] == '\n') lineStarts_.push_back(i + 1);
-    }
+        : text_(text), lastRead_(lastRead), doc_(doc) {}
 
-    // Line and column (from 1) of the byte at `offset`.
-    SourceLocation locate(std::size_t offset) const {
-        const auto line = std::upper_bound(lineStarts_.begin(), lineStarts_.end(), offset) - 1;
-        return {static_cast<int>(line - lineStarts_.begin()) + 1,
-                static_cast<int>(offset - *line) + 1};
+    // Line and column (from 1) of the byte at `offset`. The parser reports values in the order
+    // of the text, so the lines are counted once as it goes, with no table of them (an error's
+    // place, which may lie behind, is counted again from the start).
+    SourceLocation locate(std::size_t offset) {
+        if (offset < counted_) {
+            counted_ = lineStart_ = 0;
+            line_ = 1;
+        }
+        for (; counted_ < offset; ++counted_)
+            if (text_[counted_] == '\n') {
+                ++line_;
+                lineStart_ = counted_ + 1;
+            }
+        return {line_, static_cast<int>(offset - lineStart_) + 1};
     }
 
     bool null() { return scalar(lastRead_ + 1 - 4); }
@@ -106,8 +115,8 @@ public:
     bool end_array() { return close(); }
     bool key(string_t& k) {
         Container& c = stack_.back();
-        c.pendingKey = escapePointerToken(k);
-        doc_.positions_[childOf(c.id, c.pendingKey)].key = locate(openingQuote(lastRead_));
+        c.memberValue = newMember(c.id, keyToken(escapePointerToken(k)));
+        doc_.positions_[c.memberValue].key = locate(openingQuote(lastRead_));
         return true;
     }
     bool parse_error(std::size_t position, const std::string&,
@@ -122,10 +131,10 @@ public:
 
 private:
     struct Container {
-        std::size_t id;  // the container's number in the document's positions
+        std::uint32_t id;  // the container's number in the document's positions
         bool isArray;
-        std::size_t nextIndex = 0;
-        std::string pendingKey;  // escaped
+        std::uint32_t nextIndex = 0;
+        std::uint32_t memberValue = 0;  // an object's: the number of the member whose key was read
     };
 
     // nlohmann's messages read "[json.exception.parse_error.101] parse error at line L, column C:
@@ -184,22 +193,29 @@ private:
         return scalar(i);
     }
 
-    // The number of the value named `token` in the container numbered `parent`, made if new.
-    std::size_t childOf(std::size_t parent, const std::string& token) {
-        const auto [it, added] =
-            doc_.children_.try_emplace({parent, token}, doc_.positions_.size());
-        if (added) doc_.positions_.emplace_back();
-        return it->second;
+    // The token of an escaped key, numbering the key if it is new.
+    std::uint32_t keyToken(std::string escapedKey) {
+        const auto [it, added] = doc_.keyNumbers_.try_emplace(
+            std::move(escapedKey), static_cast<std::uint32_t>(doc_.keyNumbers_.size()));
+        return it->second | JsonDocument::kKeyToken;
+    }
+
+    // Numbers a new value, the member `token` of the container numbered `parent`.
+    std::uint32_t newMember(std::uint32_t parent, std::uint32_t token) {
+        const auto value = static_cast<std::uint32_t>(doc_.positions_.size());
+        doc_.positions_.emplace_back();
+        doc_.members_.push_back({parent, token, value});
+        return value;
     }
 
     // The number of the value the parser reports next.
-    std::size_t nextValue() {
+    std::uint32_t nextValue() {
         if (stack_.empty()) {
             if (doc_.positions_.empty()) doc_.positions_.emplace_back();
             return 0;
         }
         Container& c = stack_.back();
-        return childOf(c.id, c.isArray ? std::to_string(c.nextIndex++) : c.pendingKey);
+        return c.isArray ? newMember(c.id, c.nextIndex++) : c.memberValue;
     }
 
     bool scalar(std::size_t startOffset) {
@@ -214,9 +230,9 @@ private:
             errorOffset = lastRead_;
             return false;
         }
-        const std::size_t id = nextValue();
+        const std::uint32_t id = nextValue();
         doc_.positions_[id].value = locate(lastRead_);
-        stack_.push_back({id, isArray, 0, {}});
+        stack_.push_back({id, isArray});
         return true;
     }
 
@@ -229,10 +245,15 @@ private:
     const std::size_t& lastRead_;
     JsonDocument& doc_;
     std::vector<Container> stack_;
-    std::vector<std::size_t> lineStarts_;
+    std::size_t counted_ = 0;  // the characters before it are counted in line_ and lineStart_
+    int line_ = 1;
+    std::size_t lineStart_ = 0;
 };
 
 JsonDocument JsonDocument::parse(const std::string& text, const std::string& fileName) {
+    // The value numbers are 32-bit (see positions_).
+    if (text.size() > InputFile::kMaxSceneBytes)
+        throw InputFile::tooLarge(fileName, "scene files", InputFile::kMaxSceneBytes);
     JsonDocument doc;
     doc.fileName_ = fileName;
     std::size_t lastRead = 0;
@@ -245,20 +266,41 @@ JsonDocument JsonDocument::parse(const std::string& text, const std::string& fil
                                   /*strict=*/true, /*ignore_comments=*/true);
     if (!ok)
         throw InputError(fileName, recorder.locate(recorder.errorOffset), recorder.errorMessage);
+    // By value too, so that of a key given twice the last is found (as nlohmann keeps the last).
+    std::sort(doc.members_.begin(), doc.members_.end());
     doc.root_ =
         nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
     return doc;
 }
 
+bool JsonDocument::findMember(std::uint32_t parent, const std::string& token,
+                              std::uint32_t& value) const {
+    const auto search = [&](std::uint32_t memberToken) {
+        const Member last{parent, memberToken, std::numeric_limits<std::uint32_t>::max()};
+        const auto after = std::upper_bound(members_.begin(), members_.end(), last);
+        if (after == members_.begin()) return false;
+        const Member& found = *std::prev(after);
+        if (found.parent != parent || found.token != memberToken) return false;
+        value = found.value;
+        return true;
+    };
+    if (const auto key = keyNumbers_.find(token);
+        key != keyNumbers_.end() && search(key->second | kKeyToken))
+        return true;
+    // An array index, written in decimal without leading zeros.
+    std::uint32_t index = 0;
+    const auto [end, error] = std::from_chars(token.data(), token.data() + token.size(), index);
+    return error == std::errc{} && end == token.data() + token.size() && index < kKeyToken &&
+           token == std::to_string(index) && search(index);
+}
+
 const JsonDocument::Position* JsonDocument::find(const std::string& pointer) const {
     if (positions_.empty()) return nullptr;
-    std::size_t id = 0;
+    std::uint32_t id = 0;
     // Each token follows a '/'; the root's pointer is "".
     for (std::size_t start = 0; start < pointer.size();) {
         const std::size_t end = std::min(pointer.find('/', start + 1), pointer.size());
-        const auto it = children_.find({id, pointer.substr(start + 1, end - start - 1)});
-        if (it == children_.end()) return nullptr;
-        id = it->second;
+        if (!findMember(id, pointer.substr(start + 1, end - start - 1), id)) return nullptr;
         start = end;
     }
     return &positions_[id];

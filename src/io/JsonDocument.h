@@ -1,9 +1,10 @@
 #pragma once
 
 #include <cstddef>
-#include <map>
+#include <cstdint>
 #include <string>
-#include <utility>
+#include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -43,17 +44,35 @@ private:
         SourceLocation key;
         SourceLocation value;
     };
+    // A value inside a container: the container's number, the value's token and its number.
+    // The token is an array element's index, or an object member's key number with kKeyToken
+    // set (so that "0" as a key and 0 as an index never meet).
+    struct Member {
+        std::uint32_t parent;
+        std::uint32_t token;
+        std::uint32_t value;
+
+        bool operator<(const Member& o) const {
+            return std::tie(parent, token, value) < std::tie(o.parent, o.token, o.value);
+        }
+    };
+    static constexpr std::uint32_t kKeyToken = std::uint32_t{1} << 31;
 
     // The value a pointer names, by walking its tokens down from the root; none if unknown.
     const Position* find(const std::string& pointer) const;
+    // The number of the value `token` (a pointer token) names in the container `parent`.
+    bool findMember(std::uint32_t parent, const std::string& token, std::uint32_t& value) const;
 
     nlohmann::json root_;
     std::string fileName_;
-    // The positions as a tree, so that memory grows with the text and not with its nesting: each
-    // value is numbered (the root is 0) and found from its parent's number and its escaped
-    // pointer token (a key, or an array index in decimal).
+    // Flat, so that memory grows with the number of values and not with their keys or nesting
+    // (28 bytes a value): each value is numbered in the order it is parsed (the root is 0), its
+    // positions at its number; the members, sorted by (parent, token, value) once parsed, are
+    // searched by halving. Numbers fit 32 bits: a value takes a character, and the text is at
+    // most InputFile::kMaxSceneBytes. Each distinct key is stored once (escaped as in a pointer).
     std::vector<Position> positions_;
-    std::map<std::pair<std::size_t, std::string>, std::size_t> children_;
+    std::vector<Member> members_;
+    std::unordered_map<std::string, std::uint32_t> keyNumbers_;
 
     friend class JsonPositionRecorder;
 };

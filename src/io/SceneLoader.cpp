@@ -28,6 +28,7 @@
 #include "io/ObjLoader.h"
 #include "lights/AreaLight.h"
 #include "lights/DirectionalLight.h"
+#include "lights/EnvironmentLight.h"
 #include "lights/PointLight.h"
 #include "lights/SpotLight.h"
 #include "materials/BlinnPhongMaterial.h"
@@ -39,6 +40,7 @@
 #include "materials/NormalMap.h"
 #include "math/Transform.h"
 #include "render/Filter.h"
+#include "render/ToneMapper.h"
 #include "util/DidYouMean.h"
 #include "util/Parameters.h"
 #include "util/Registry.h"
@@ -67,6 +69,10 @@ std::vector<std::string> withKeys(std::vector<std::string> common,
     common.insert(common.end(), own.begin(), own.end());
     return common;
 }
+
+// How many shadow rays the Whitted integrator traces towards an area light or the environment per
+// shading point, unless the scene says.
+constexpr int kDefaultShadowSamples = 16;
 
 }  // namespace
 
@@ -173,6 +179,8 @@ private:
     // A light that reads its own keys: LightType::keys() and LightType::create(parameters).
     template <typename LightType>
     void loadLight(const Node& node, const char* what);
+    // The top-level "environment" (the root is where a "background" beside it is reported).
+    void loadEnvironment(const Node& root);
     void loadQuadLight(const Node& node, const char* what);
     void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
@@ -323,6 +331,7 @@ std::vector<SceneLoader::Vocabulary> SceneLoader::vocabulary() {
             {"materials", Reader::materialTypes().names()},
             {"textures", Reader::textureTypes().names()},
             {"filters", Filter::types().names()},
+            {"tone operators", ToneMapper::operators().names()},
             {"integrators", IntegratorRegistry::table().names()}};
 }
 
@@ -330,8 +339,12 @@ Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::
     InputFile::check(path, "a scene file", "scene files", InputFile::kMaxSceneBytes);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "cannot open the scene file (does it exist?)");
-    // Read in blocks, so that a pipe that never ends stops at the limit too.
+    // Read in blocks, so that a pipe that never ends stops at the limit too; a file's text is
+    // given its size at once (not up to twice that by doubling).
     std::string text;
+    std::error_code sizeUnknown;
+    if (const std::uintmax_t size = std::filesystem::file_size(path, sizeUnknown); !sizeUnknown)
+        text.reserve(static_cast<std::size_t>(size));
     std::string block(1 << 16, '\0');
     while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
         text.append(block.data(), static_cast<std::size_t>(in.gcount()));
@@ -356,8 +369,8 @@ Scene SceneLoader::Reader::load() {
     const Node root{doc_.root(), "", "the scene"};
     requireObject(root, "the scene");
     checkKeys(root, "the scene",
-              {"render", "camera", "background", "ambient", "materials", "objects", "lights",
-               "radiosity"});
+              {"render", "camera", "background", "environment", "ambient", "materials", "objects",
+               "lights", "radiosity"});
 
     defaultMaterial_ = scene_.addMaterial(std::make_unique<BlinnPhongMaterial>());
     if (root.has("render")) loadRender(root["render"]);
@@ -365,6 +378,7 @@ Scene SceneLoader::Reader::load() {
     if (!root.has("camera")) fail(root, "the scene has no \"camera\"");
     loadCamera(root["camera"]);
     if (root.has("background")) scene_.setBackground(readColor(root["background"]));
+    if (root.has("environment")) loadEnvironment(root);
     if (root.has("ambient")) scene_.setAmbient(readColor(root["ambient"]));
     if (root.has("materials")) loadMaterials(root["materials"]);
     if (root.has("objects")) {
@@ -388,7 +402,8 @@ Scene SceneLoader::Reader::load() {
 void SceneLoader::Reader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
     checkKeys(node, "\"render\"",
-              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive"});
+              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive",
+               "exposure", "tonemap"});
     RenderSettings& settings = scene_.settings();
     if (node.has("width"))
         settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
@@ -403,6 +418,16 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     }
     if (node.has("filter")) loadFilter(node["filter"]);
     if (node.has("adaptive")) loadAdaptive(node, node["adaptive"]);
+    if (node.has("exposure")) {
+        const Node exposure = node["exposure"];
+        settings.exposure = readNumber(exposure);
+        constexpr int limit = RenderSettings::kMaxExposure;
+        if (std::abs(settings.exposure) > static_cast<float>(limit))
+            fail(exposure, "\"exposure\" must be between -" + std::to_string(limit) + " and " +
+                               std::to_string(limit) + " stops");
+    }
+    if (node.has("tonemap"))
+        settings.tonemap = lookUp(ToneMapper::operators(), node["tonemap"], "tonemap").name;
 }
 
 void SceneLoader::Reader::loadFilter(const Node& node) {
@@ -798,6 +823,30 @@ void SceneLoader::Reader::loadLight(const Node& node) {
     (this->*entry.load)(node, entry.what);
 }
 
+void SceneLoader::Reader::loadEnvironment(const Node& root) {
+    const Node node = root["environment"];
+    if (root.has("background"))
+        failAtKey(node,
+                  "\"environment\" replaces \"background\" (rays that leave the scene see "
+                  "the environment): give one of them");
+    const char* what = "\"environment\"";
+    requireObject(node, what);
+    checkKeys(node, what, EnvironmentLight::keys());
+    const Node file = require(node, "file", what);
+    const std::filesystem::path path = baseDir_ / readString(file);
+    std::optional<Image> map;
+    try {
+        map = ImageReader::read(path);
+    } catch (const InputError& e) {
+        fail(file, "environment map " + inQuotes(path.string()) + ": " + e.message());
+    }
+    auto environment =
+        EnvironmentLight::create(ObjectParameters(*this, node, what), *std::move(map));
+    environment->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
+                                                      : kDefaultShadowSamples);
+    scene_.setEnvironment(std::move(environment));
+}
+
 void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
     checkKeys(node, what, {"type", "corner", "edge1", "edge2", "radiance", "samples"});
     const Vec3 corner = readVec3(require(node, "corner", what));
@@ -834,8 +883,6 @@ const Material* SceneLoader::Reader::emitterOf(const Color& radiance) {
 
 void SceneLoader::Reader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
                                        std::unique_ptr<Light> light) {
-    // How many shadow rays the Whitted integrator traces towards it per shading point.
-    constexpr int kDefaultShadowSamples = 16;
     light->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
                                                 : kDefaultShadowSamples);
     surface->setAreaLight(light.get());

@@ -17,6 +17,9 @@ struct RenderSettings {
     // The widest and tallest image the scene file and --width, --height accept (a 32768 x 32768
     // film takes 12 GiB); the memory the image's buffers need is checked as well.
     static constexpr int kMaxImageSide = 32768;
+    // The most stops of exposure either way: 2^64 times any radiance a scene makes still fits
+    // a float.
+    static constexpr int kMaxExposure = 64;
 
     int width = 640;
     int height = 480;
@@ -25,6 +28,8 @@ struct RenderSettings {
     std::string integrator = "whitted";
     FilterSettings filter;                     // the reconstruction filter
     std::optional<AdaptiveSettings> adaptive;  // none: every pixel takes samplesPerPixel
+    float exposure = 0;                        // stops: the outputs are scaled by 2^exposure
+    std::string tonemap = "clamp";             // the 8-bit outputs' tone operator
     RadiositySettings radiosity;               // the top-level "radiosity" block
 };
 

@@ -71,6 +71,53 @@ TEST(CliImageLimit, AnImageLargerThanTheMemoryIsRefusedBeforeAnyWork) {
                              0),
               0u)
         << lines[0];
+    const std::string override = " this machine has (--max-memory overrides)";
+    EXPECT_EQ(lines[0].substr(lines[0].size() - override.size()), override) << lines[0];
+    EXPECT_EQ(folder.entries(), std::vector<std::string>{"scene.json"});
+}
+
+// --max-memory replaces the machine's memory as the bound, both ways: a 1000 x 1000 PNG needs
+// 18 MB (12 bytes a pixel for the film, 2 x 3 for the writer), so 17.9M refuses it in one line
+// before any work and 18M lets it render (one pixel of it, by --crop: the buffers are the whole
+// image's all the same).
+TEST(CliImageLimit, MaxMemoryReplacesTheMachinesMemory) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const std::vector<std::string> image = {"scene.json", "-o",   "out.png", "--width", "1000",
+                                            "--height",   "1000", "--crop",  "0,0,1,1", "--quiet"};
+    std::vector<std::string> arguments = image;
+    arguments.insert(arguments.end(), {"--max-memory", "17.9M"});
+    const RunResult refused = runLancer(arguments, folder.path(), std::chrono::seconds(10));
+    EXPECT_EQ(refused.exitStatus, 2) << refused;
+    EXPECT_EQ(refused.errorLines(),
+              std::vector<std::string>{"lancer: error: a 1000 x 1000 image needs about 18.0 MB of "
+                                       "memory for its buffers, more than the 17.9 MB "
+                                       "--max-memory allows"});
+    EXPECT_EQ(folder.entries(), std::vector<std::string>{"scene.json"});
+
+    arguments = image;
+    arguments.insert(arguments.end(), {"--max-memory", "18m"});
+    const RunResult rendered = runLancer(arguments, folder.path());
+    EXPECT_EQ(rendered.exitStatus, 0) << rendered;
+    EXPECT_EQ(loadImage(folder / "out.png").width, 1000);
+}
+
+// Each auxiliary output adds its film and its EXR's bitmap and file (36 bytes a pixel again).
+TEST(CliImageLimit, TheAuxiliaryOutputsCountInTheMemoryNeeded) {
+    constexpr int kSide = RenderSettings::kMaxImageSide;
+    const std::uint64_t needed = 4 * 36ull * kSide * kSide;
+    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    if (static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(pageSize) >= needed)
+        GTEST_SKIP() << "this machine has the memory for the largest image and its outputs";
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const RunResult run =
+        runLancer({"scene.json", "-o", "out.pfm", "--width", std::to_string(kSide), "--height",
+                   std::to_string(kSide), "--aov", "albedo,normal,depth"},
+                  folder.path(), std::chrono::seconds(10));
+    EXPECT_EQ(run.exitStatus, 2) << run;
+    EXPECT_NE(run.standardError.find("image needs about 154.6 GB of memory"), std::string::npos)
+        << run;
     EXPECT_EQ(folder.entries(), std::vector<std::string>{"scene.json"});
 }
 

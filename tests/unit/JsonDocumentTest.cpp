@@ -201,6 +201,49 @@ TEST(JsonDocumentTest, PositionsOfManyValuesDeepDown) {
     EXPECT_TRUE(isAt(doc.valueLocation(JsonDocument::child(pointer, std::size_t{3})), 0, 0));
 }
 
+// A key given twice: nlohmann keeps the last value, and its place is the one reported.
+TEST(JsonDocumentTest, OfAKeyGivenTwiceTheLastIsLocated) {
+    const JsonDocument doc = JsonDocument::parse(R"({"a": 1, "b": 2, "a": [3]})", "twice.json");
+    EXPECT_EQ(doc.root()["a"], nlohmann::json::array({3}));
+    EXPECT_TRUE(isAt(doc.keyLocation("/a"), 1, 18));
+    EXPECT_TRUE(isAt(doc.valueLocation("/a"), 1, 23));
+    EXPECT_TRUE(isAt(doc.valueLocation("/a/0"), 1, 24));
+}
+
+// Keys that read as numbers are keys, indices are written in decimal without leading zeros, and
+// a key of one object is not found in another.
+TEST(JsonDocumentTest, KeysAndIndicesDoNotMeet) {
+    const JsonDocument doc =
+        JsonDocument::parse(R"({"0": [5, 6], "1": {"0": 7}, "x": {"y": 8}})", "n.json");
+    EXPECT_TRUE(isAt(doc.valueLocation("/0"), 1, 7));
+    EXPECT_TRUE(isAt(doc.valueLocation("/0/1"), 1, 11));
+    EXPECT_TRUE(isAt(doc.valueLocation("/1/0"), 1, 26));
+    EXPECT_TRUE(isAt(doc.valueLocation("/0/01"), 0, 0));
+    EXPECT_TRUE(isAt(doc.valueLocation("/0/-1"), 0, 0));
+    EXPECT_TRUE(isAt(doc.valueLocation("/0/4294967297"), 0, 0));
+    EXPECT_TRUE(isAt(doc.valueLocation("/2"), 0, 0));
+    EXPECT_TRUE(isAt(doc.valueLocation("/y"), 0, 0));
+    EXPECT_TRUE(isAt(doc.valueLocation("/1/y"), 0, 0));
+}
+
+// A scene of many objects: each of 100,000 elements (on lines of their own) finds its line, and
+// the members of the last one their columns.
+TEST(JsonDocumentTest, LocatesEveryElementOfALongArray) {
+    constexpr std::size_t kCount = 100000;
+    std::string text = "[\n";
+    for (std::size_t i = 0; i < kCount; ++i)
+        text += R"({"type": "sphere", "radius": )" + std::to_string(i) + "},\n";
+    text += "{}]";
+    const JsonDocument doc = JsonDocument::parse(text, "many.json");
+    for (std::size_t i = 0; i < kCount; i += 997)
+        ASSERT_TRUE(isAt(doc.valueLocation(JsonDocument::child("", i)), static_cast<int>(i) + 2, 1))
+            << i;
+    const std::string last = JsonDocument::child("", kCount - 1);
+    EXPECT_TRUE(isAt(doc.keyLocation(JsonDocument::child(last, "radius")), kCount + 1, 20));
+    EXPECT_TRUE(isAt(doc.valueLocation(JsonDocument::child(last, "radius")), kCount + 1, 30));
+    EXPECT_TRUE(isAt(doc.valueLocation(JsonDocument::child("", kCount)), kCount + 2, 1));
+}
+
 TEST(JsonDocumentTest, EmptyTextIsAnError) {
     EXPECT_TRUE(reportsAt(parseError(""), 1, 1));
 }
