@@ -22,15 +22,15 @@ AovSample FirstHitProbe::probe(const Ray& cameraRay, std::uint64_t& rayCount) co
         if (!found) return sample;
         const Hit& hit = *found;
         const bool front = hit.frontFace(ray);
-        const Bsdf bsdf(*hit.material, hit, Bsdf::Weights::AsGiven);
+        const Vec3 wo = -normalize(ray.direction);
+        const Bsdf bsdf(*hit.material, hit, wo, Bsdf::Weights::AsGiven);
         if (depth == 0) {
             sample.normal = bsdf.shadingNormal(front);
             // The camera's rays have unit directions, so t is a distance.
             sample.depth = hit.t;
         }
         std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
-        const std::size_t count =
-            depth < maxDepth_ ? bsdf.specularRays(-normalize(ray.direction), front, rays) : 0;
+        const std::size_t count = depth < maxDepth_ ? bsdf.specularRays(wo, front, rays) : 0;
         // A surface with a diffuse colour is what the albedo describes, even if it also
         // reflects (its mirror image is detail a denoiser should keep from the image itself);
         // one without a diffuse colour or a way on (black, or the depth reached) has albedo 0.
