@@ -30,7 +30,8 @@ AovSample FirstHitProbe::probe(const Ray& cameraRay, std::uint64_t& rayCount) co
             sample.depth = hit.t;
         }
         std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
-        const std::size_t count = depth < maxDepth_ ? bsdf.specularRays(wo, front, rays) : 0;
+        const std::size_t count =
+            depth < maxDepth_ ? bsdf.specularRays(wo, front, rays) : 0;
         // A surface with a diffuse colour is what the albedo describes, even if it also
         // reflects (its mirror image is detail a denoiser should keep from the image itself);
         // one without a diffuse colour or a way on (black, or the depth reached) has albedo 0.
