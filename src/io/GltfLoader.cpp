@@ -122,8 +122,7 @@ private:
     void warnUnsupported();
     void addNode(int index, const Transform& parent, int depth);
     void addPrimitive(const tinygltf::Primitive& primitive, const Transform& toWorld);
-    // An accessor's elements of `components` numbers each, as floats (normalized integers scaled
-    // to [0, 1] or [-1, 1]).
+    // An accessor's elements of `components` numbers each, as floats.
     std::vector<float> floats(int accessorIndex, int components, const std::string& what) const;
     std::vector<std::uint32_t> indices(int accessorIndex) const;
     // The bytes of an accessor's elements, checked against its buffer: where each starts.
@@ -309,6 +308,9 @@ std::vector<float> GltfReader::floats(int accessorIndex, int components,
     if (size <= 0) fail(what + " has an unknown component type");
     std::vector<float> values(accessor.count * std::size_t(components), 0.0f);
     const auto starts = elements(accessor, std::size_t(size * components), what);
+    // Integers are scaled to [0, 1] or [-1, 1] when normalized, else taken as they are
+    // (KHR_mesh_quantization's positions).
+    const bool normalized = accessor.normalized;
     for (std::size_t i = 0; i < starts.size(); ++i)
         for (int c = 0; c < components; ++c) {
             const unsigned char* at = starts[i] + c * size;
@@ -318,21 +320,23 @@ std::vector<float> GltfReader::floats(int accessorIndex, int components,
                     std::memcpy(&v, at, 4);
                     break;
                 case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-                    v = *at / 255.0f;
+                    v = normalized ? *at / 255.0f : *at;
                     break;
-                case TINYGLTF_COMPONENT_TYPE_BYTE:
-                    v = std::max(static_cast<signed char>(*at) / 127.0f, -1.0f);
+                case TINYGLTF_COMPONENT_TYPE_BYTE: {
+                    const auto b = static_cast<signed char>(*at);
+                    v = normalized ? std::max(b / 127.0f, -1.0f) : b;
                     break;
+                }
                 case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
                     std::uint16_t u;
                     std::memcpy(&u, at, 2);
-                    v = u / 65535.0f;
+                    v = normalized ? u / 65535.0f : u;
                     break;
                 }
                 case TINYGLTF_COMPONENT_TYPE_SHORT: {
-                    std::int16_t s;
-                    std::memcpy(&s, at, 2);
-                    v = std::max(s / 32767.0f, -1.0f);
+                    std::int16_t h;
+                    std::memcpy(&h, at, 2);
+                    v = normalized ? std::max(h / 32767.0f, -1.0f) : h;
                     break;
                 }
                 default:

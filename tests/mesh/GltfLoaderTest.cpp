@@ -50,6 +50,14 @@ public:
         std::memcpy(bytes.data(), values.data(), bytes.size());
         return accessor(bytes, 5126, values.size() / std::size_t(components), type);
     }
+    // An accessor of unsigned bytes, normalized to [0, 1] or integers.
+    int bytes(const std::vector<std::uint8_t>& values, const std::string& type, int components,
+              bool normalized) {
+        const int index = accessor(std::string(values.begin(), values.end()), 5121,
+                                   values.size() / std::size_t(components), type);
+        doc_["accessors"][std::size_t(index)]["normalized"] = normalized;
+        return index;
+    }
     int indices(const std::vector<std::uint16_t>& values) {
         std::string bytes(values.size() * 2, '\0');
         std::memcpy(bytes.data(), values.data(), bytes.size());
@@ -190,6 +198,19 @@ TEST_F(GltfTest, IndicesNormalsAndUvsAreRead) {
     expectNear(loaded.mesh->normals[0], Vec3(0, 0, 1));  // normalised after the scale
     ASSERT_EQ(loaded.mesh->uvs.size(), 4u);
     EXPECT_EQ(loaded.mesh->uvs[0].y, 0.75f);
+}
+
+// Integer attributes: normalized ones scaled to [0, 1] (uvs), others taken as they are
+// (positions of KHR_mesh_quantization).
+TEST_F(GltfTest, IntegerAttributesAreScaledOnlyWhenNormalized) {
+    GltfDocument doc;
+    const int positions = doc.bytes({0, 0, 0, 2, 0, 0, 0, 2, 0}, "VEC3", 3, false);
+    const int uvs = doc.bytes({0, 255, 255, 255, 0, 0}, "VEC2", 2, true);
+    doc.addRoot(doc.node({{"mesh", doc.mesh({{"POSITION", positions}, {"TEXCOORD_0", uvs}})}}));
+    const LoadedObj loaded = load(doc);
+    expectNear(corner(*loaded.mesh, 0, 1), Vec3(2, 0, 0));
+    EXPECT_EQ(loaded.mesh->uvs[1], Vec2(1, 0));  // glTF's (1, 1): v turned up
+    EXPECT_EQ(loaded.mesh->uvs[2], Vec2(0, 1));
 }
 
 TEST_F(GltfTest, BaseColourIsTheDiffuseAndEmissionIsScaledByItsStrength) {
