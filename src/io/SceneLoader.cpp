@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -20,6 +21,7 @@
 #include "geometry/Torus.h"
 #include "geometry/Triangle.h"
 #include "integrators/IntegratorRegistry.h"
+#include "io/GltfLoader.h"
 #include "io/ImageReader.h"
 #include "io/InputFile.h"
 #include "io/JsonDocument.h"
@@ -149,11 +151,20 @@ private:
                                         const std::optional<Transform>& transform);
     std::unique_ptr<Shape> loadMeshObject(const Node& node, const char* what,
                                           const std::optional<Transform>& transform);
+    std::unique_ptr<Shape> loadGltfObject(const Node& node, const char* what,
+                                          const std::optional<Transform>& transform);
+    // An instance of the model that the object's "file" names, read by `read` ("model" names it
+    // in messages), with the object's material if it has one, else the model's own.
+    using ModelReader = std::function<std::shared_ptr<TriangleMesh>(const std::filesystem::path&)>;
+    std::unique_ptr<Shape> loadModelObject(const Node& node, const char* what,
+                                           const std::optional<Transform>& transform,
+                                           const std::string& model, const ModelReader& read);
     std::unique_ptr<Shape> loadCsg(const Node& node, const char* what,
                                    const std::optional<Transform>& transform);
     static std::unique_ptr<Shape> placed(std::unique_ptr<Shape> shape,
                                          const std::optional<Transform>& transform);
-    std::shared_ptr<const Mesh> loadMesh(const Node& file);
+    std::shared_ptr<const Mesh> loadMesh(const Node& file, const std::string& model,
+                                         const ModelReader& read);
     // Image files are read once, however many materials (and models) use them.
     std::shared_ptr<const Texture> loadImageTexture(
         const std::filesystem::path& path,
@@ -270,6 +281,7 @@ const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectType
         {"plane", "a plane", &Reader::loadShape<Plane>},
         {"triangle", "a triangle", &Reader::loadTriangle},
         {"mesh", "a mesh", &Reader::loadMeshObject},
+        {"gltf", "a glTF model", &Reader::loadGltfObject},
         {"disk", "a disk", &Reader::loadShape<Disk>},
         {"box", "a box", &Reader::loadShape<Box>},
         {"cylinder", "a cylinder", &Reader::loadShape<Cylinder>},
@@ -654,10 +666,31 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadTriangle(
 
 std::unique_ptr<Shape> SceneLoader::Reader::loadMeshObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
+    const auto readObj = [this](const std::filesystem::path& path) {
+        const auto loadTexture = [this](const std::filesystem::path& p,
+                                        ImageReader::Content content) {
+            return loadImageTexture(p, content);
+        };
+        return ObjLoader::load(path, loadTexture, warnings_);
+    };
+    return loadModelObject(node, what, transform, "mesh", readObj);
+}
+
+std::unique_ptr<Shape> SceneLoader::Reader::loadGltfObject(
+    const Node& node, const char* what, const std::optional<Transform>& transform) {
+    const auto readGltf = [this](const std::filesystem::path& path) {
+        return GltfLoader::load(path, warnings_);
+    };
+    return loadModelObject(node, what, transform, "glTF model", readGltf);
+}
+
+std::unique_ptr<Shape> SceneLoader::Reader::loadModelObject(
+    const Node& node, const char* what, const std::optional<Transform>& transform,
+    const std::string& model, const ModelReader& read) {
     checkKeys(node, what, {"type", "file", "material", "transform"});
-    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what));
+    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what), model, read);
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
-    // Without "material", the model's own materials (from its .mtl) are used.
+    // Without "material", the model's own materials (an OBJ's .mtl, a glTF's) are used.
     const Material* material = node.has("material") ? materialOf(node) : nullptr;
     return std::make_unique<Instance>(std::move(mesh), transform.value_or(Transform()), material);
 }
@@ -697,23 +730,21 @@ std::unique_ptr<Shape> SceneLoader::Reader::placed(std::unique_ptr<Shape> shape,
     return std::make_unique<Instance>(std::move(shape), *transform);
 }
 
-std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
+std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
+                                                          const std::string& model,
+                                                          const ModelReader& read) {
     const std::filesystem::path path = baseDir_ / readString(file);
-    const std::string key = std::filesystem::weakly_canonical(path).string();
+    const std::string key = model + " " + std::filesystem::weakly_canonical(path).string();
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
-        const auto loadTexture = [this](const std::filesystem::path& p,
-                                        ImageReader::Content content) {
-            return loadImageTexture(p, content);
-        };
-        std::shared_ptr<TriangleMesh> triangles = ObjLoader::load(path, loadTexture, warnings_);
+        std::shared_ptr<TriangleMesh> triangles = read(path);
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
         meshes_[key] = mesh;
         scene_.statistics().uniqueTriangles += mesh->triangles().triangleCount();
         scene_.statistics().meshBytes += mesh->memoryBytes();
         return mesh;
     } catch (const InputError& e) {
-        fail(file, "mesh " + inQuotes(path.string()) + ": " + e.message());
+        fail(file, model + " " + inQuotes(path.string()) + ": " + e.message());
     }
 }
 
