@@ -264,13 +264,20 @@ public:
     std::shared_ptr<const Texture> texture(const std::string& key) const override {
         return loader_.loadTexture(loader_.require(node_, key, what_));
     }
+    std::unique_ptr<Parameters> object(const std::string& key,
+                                       const std::vector<std::string>& keys) const override {
+        const Node value = loader_.require(node_, key, what_);
+        loader_.requireObject(value, value.name);
+        loader_.checkKeys(value, value.name, keys);
+        return std::make_unique<ObjectParameters>(loader_, value, value.name.c_str());
+    }
     [[noreturn]] void fail(const std::string& key, const std::string& message) const override {
         loader_.fail(node_.has(key) ? node_[key] : node_, message);
     }
 
 private:
     Reader& loader_;
-    const Node& node_;
+    const Node node_;
     std::string what_;
 };
 

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "DirectionChiSquare.h"
 #include "geometry/Hit.h"
 #include "materials/BlinnPhongLobe.h"
 #include "materials/BlinnPhongMaterial.h"
@@ -30,133 +31,6 @@
 
 namespace lancer::test {
 namespace {
-
-// Uniform numbers in [0, 1) from a seeded generator: the tests are repeatable.
-class UniformSource {
-public:
-    explicit UniformSource(unsigned seed) : engine_(seed) {}
-    float next() { return std::min(distribution_(engine_), 0x1.fffffep-1f); }
-    Vec2 next2D() { return {next(), next()}; }
-
-private:
-    std::mt19937 engine_;
-    std::uniform_real_distribution<float> distribution_{0.0f, 1.0f};
-};
-
-Vec3 direction(float thetaDegrees, float phiDegrees) {
-    const float theta = radians(thetaDegrees), phi = radians(phiDegrees);
-    return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
-
-// Q(a, x), the regularized upper incomplete gamma function (Numerical Recipes' gammq): the
-// probability that a chi-square variable of 2a degrees of freedom exceeds 2x.
-double upperIncompleteGamma(double a, double x) {
-    constexpr double kEpsilon = 1e-14, kTiny = 1e-300;
-    const double logPrefactor = -x + a * std::log(x) - std::lgamma(a);
-    if (x < a + 1) {  // the series of P = 1 - Q
-        double term = 1 / a, sum = term;
-        for (double ap = a + 1; std::abs(term) > std::abs(sum) * kEpsilon; ap += 1) {
-            term *= x / ap;
-            sum += term;
-        }
-        return 1 - sum * std::exp(logPrefactor);
-    }
-    // Q's continued fraction, by Lentz's method.
-    double b = x + 1 - a, c = 1 / kTiny, d = 1 / b, h = d;
-    for (int i = 1; i < 10000; ++i) {
-        const double an = -i * (i - a);
-        b += 2;
-        d = an * d + b;
-        if (std::abs(d) < kTiny) d = kTiny;
-        c = b + an / c;
-        if (std::abs(c) < kTiny) c = kTiny;
-        d = 1 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1) < kEpsilon) break;
-    }
-    return std::exp(logPrefactor) * h;
-}
-
-// A way of drawing directions, and the density it claims for them.
-struct DirectionSampler {
-    std::function<std::optional<Vec3>(UniformSource&)> sample;
-    std::function<double(const Vec3&)> pdf;
-};
-
-// Draws `count` directions and compares their histogram over a grid of the sphere (theta from
-// +z, phi around it) with the counts the density predicts, integrated over each cell by the
-// midpoint rule on a fine sub-grid. Cells expecting fewer than 5 hits are pooled (the chi-square
-// approximation needs it). Returns the p-value of the observed histogram; a direction where the
-// density says none can be also fails the test.
-double chiSquarePValue(const DirectionSampler& sampler, int count, unsigned seed,
-                       std::string& problem) {
-    constexpr int kThetaCells = 16, kPhiCells = 32, kSubCells = 24;
-    const auto cellOf = [](const Vec3& w) {
-        const double theta = std::acos(std::clamp(static_cast<double>(w.z), -1.0, 1.0));
-        double phi = std::atan2(static_cast<double>(w.y), static_cast<double>(w.x));
-        if (phi < 0) phi += 2 * std::numbers::pi;
-        const int i =
-            std::min(kThetaCells - 1, static_cast<int>(theta / std::numbers::pi * kThetaCells));
-        const int j =
-            std::min(kPhiCells - 1, static_cast<int>(phi / (2 * std::numbers::pi) * kPhiCells));
-        return i * kPhiCells + j;
-    };
-    std::vector<double> observed(kThetaCells * kPhiCells, 0.0);
-    UniformSource random(seed);
-    for (int k = 0; k < count; ++k)
-        if (const auto w = sampler.sample(random))
-            observed[static_cast<std::size_t>(cellOf(*w))] += 1;
-
-    std::vector<double> expected(observed.size(), 0.0);
-    const double dTheta = std::numbers::pi / kThetaCells, dPhi = 2 * std::numbers::pi / kPhiCells;
-    for (int i = 0; i < kThetaCells; ++i)
-        for (int j = 0; j < kPhiCells; ++j) {
-            double sum = 0;
-            for (int a = 0; a < kSubCells; ++a)
-                for (int b = 0; b < kSubCells; ++b) {
-                    const double theta = (i + (a + 0.5) / kSubCells) * dTheta;
-                    const double phi = (j + (b + 0.5) / kSubCells) * dPhi;
-                    const Vec3 w(static_cast<float>(std::sin(theta) * std::cos(phi)),
-                                 static_cast<float>(std::sin(theta) * std::sin(phi)),
-                                 static_cast<float>(std::cos(theta)));
-                    sum += sampler.pdf(w) * std::sin(theta);
-                }
-            expected[static_cast<std::size_t>(i * kPhiCells + j)] =
-                sum * dTheta * dPhi / (kSubCells * kSubCells) * count;
-        }
-
-    std::vector<std::size_t> order(observed.size());
-    for (std::size_t k = 0; k < order.size(); ++k)
-        order[k] = k;
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return expected[a] < expected[b]; });
-    double chiSquare = 0, pooledExpected = 0, pooledObserved = 0;
-    int bins = 0;
-    for (std::size_t k : order) {
-        if (expected[k] == 0 && observed[k] > count * 1e-5) {
-            std::ostringstream out;
-            out << observed[k] << " samples in cell " << k << " where the pdf is 0";
-            problem = out.str();
-            return 0;
-        }
-        if (expected[k] < 5) {
-            pooledExpected += expected[k];
-            pooledObserved += observed[k];
-        } else {
-            const double diff = observed[k] - expected[k];
-            chiSquare += diff * diff / expected[k];
-            ++bins;
-        }
-    }
-    if (pooledExpected > 0) {
-        const double diff = pooledObserved - pooledExpected;
-        chiSquare += diff * diff / std::max(pooledExpected, 5.0);
-        ++bins;
-    }
-    const int degreesOfFreedom = bins - 1;
-    return upperIncompleteGamma(degreesOfFreedom / 2.0, chiSquare / 2);
-}
 
 // One test in many may fail by chance with probability alpha; Bonferroni's correction keeps the
 // whole suite's false-alarm rate at 1%.
@@ -174,7 +48,7 @@ void expectChiSquarePasses(const DirectionSampler& sampler, unsigned seed) {
 
 DirectionSampler lobeSampler(const BsdfLobe& lobe, const Vec3& wo) {
     return {[&lobe, wo](UniformSource& random) -> std::optional<Vec3> {
-                const auto s = lobe.sample(wo, random.next2D());
+                const auto s = lobe.sample(wo, 0, random.next2D());
                 if (!s) return std::nullopt;
                 return s->wi;
             },
@@ -317,7 +191,7 @@ TEST(BlinnPhongLobe, SampleWeightsNeverExceedKsAndAverageToTheAlbedo) {
         constexpr int kSamples = 400'000;
         double sum = 0;
         for (int k = 0; k < kSamples; ++k) {
-            const auto s = lobe.sample(wo, random.next2D());
+            const auto s = lobe.sample(wo, 0, random.next2D());
             if (!s) continue;
             const double weight = s->f.r * std::abs(s->wi.z) / s->pdf;
             ASSERT_LE(weight, 0.9 * (1 + 1e-5));
@@ -370,7 +244,7 @@ TEST(Bsdf, CombinedWeightsAboveOneAreScaledToConserveEnergy) {
 TEST(MirrorLobe, ReflectsAboutTheNormalWithWeightKr) {
     const MirrorLobe mirror(Color(0.25f, 0.5f, 0.75f));
     const Vec3 wo = direction(30, 40);
-    const auto s = mirror.sample(wo, {0.3f, 0.6f});
+    const auto s = mirror.sample(wo, 0, {0.3f, 0.6f});
     ASSERT_TRUE(s);
     EXPECT_TRUE(s->isDelta);
     EXPECT_NEAR(s->wi.x, -wo.x, 1e-6f);
@@ -394,7 +268,7 @@ TEST(DielectricLobe, ConservesEnergyAndSplitsByFresnel) {
         constexpr int kSteps = 10000;
         double flux = 0, reflected = 0;
         for (int k = 0; k < kSteps; ++k) {
-            const auto s = glass.sample(wo, {(static_cast<float>(k) + 0.5f) / kSteps, 0.5f});
+            const auto s = glass.sample(wo, 0, {(static_cast<float>(k) + 0.5f) / kSteps, 0.5f});
             ASSERT_TRUE(s);
             const bool transmitted = s->wi.z * wo.z < 0;
             flux += s->f.r * std::abs(s->wi.z) / s->pdf * s->etaSquared;
@@ -441,11 +315,11 @@ TEST(Bsdf, LocalResponseIsTheSceneFormatsEquation) {
     const Vec3 wo = direction(30, 0), wi = direction(50, 160);
     const float cosL = wi.z, cosH = normalize(wo + wi).z;
     const Color expected = Color(0.7f) * cosL + Color(0.6f) * std::pow(cosH, 20.0f);
-    EXPECT_NEAR(bsdf.localResponse(wo, wi, true).g, expected.g, 1e-6f);
-    EXPECT_TRUE(bsdf.localResponse(wo, direction(100, 0), true).isBlack());
+    EXPECT_NEAR(bsdf.localResponse(wo, wi, true, true).g, expected.g, 1e-6f);
+    EXPECT_TRUE(bsdf.localResponse(wo, direction(100, 0), true, true).isBlack());
     // Seen from the back side, the model is mirrored.
     const auto mirrored = [](const Vec3& v) { return Vec3(v.x, v.y, -v.z); };
-    EXPECT_NEAR(bsdf.localResponse(mirrored(wo), mirrored(wi), false).g, expected.g, 1e-6f);
+    EXPECT_NEAR(bsdf.localResponse(mirrored(wo), mirrored(wi), false, true).g, expected.g, 1e-6f);
     EXPECT_NEAR(bsdf.diffuseReflectance().r, 0.7f, 0);
     EXPECT_TRUE(bsdf.hasGlossyLobe());
 }
