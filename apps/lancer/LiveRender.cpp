@@ -41,6 +41,9 @@ LiveRender::~LiveRender() {
 
 void LiveRender::start() {
     RenderOptions options = options_;
+    // Only the render that goes to the output writes auxiliary outputs; the views after it
+    // would compute them for nothing.
+    if (status_) options.aovs.clear();
     options.cancel = &cancel_;
     options.previewBlockSizes = kPreviewBlockSizes;
     options.onTileDone = [this](const FinishedTile& tile) {
@@ -66,7 +69,6 @@ RenderResult LiveRender::stop() {
 }
 
 int LiveRender::run(const std::function<int(RenderResult&)>& deliver) {
-    std::optional<int> status;  // what deliver returned, once it was called
     start();
     for (;;) {
         bool close = options_.cancel && options_.cancel->load();
@@ -91,7 +93,7 @@ int LiveRender::run(const std::function<int(RenderResult&)>& deliver) {
         }
         if (finished_ && thread_.joinable()) {
             RenderResult result = stop();
-            if (!status) status = deliver(result);
+            if (!status_) status_ = deliver(result);
             // Once the output is written: a title saying "done" means the file is there.
             char done[96];
             std::snprintf(done, sizeof done, "done in %.2f s  (S: save, Esc: close)",
@@ -102,9 +104,9 @@ int LiveRender::run(const std::function<int(RenderResult&)>& deliver) {
         if (close) {
             if (thread_.joinable()) {
                 RenderResult result = stop();
-                if (!status) status = deliver(result);
+                if (!status_) status_ = deliver(result);
             }
-            return *status;
+            return *status_;
         }
         if (moved) {
             if (thread_.joinable()) stop();

@@ -52,6 +52,7 @@ private:
     bool quiet_;
     CameraOrbit orbit_;
     int snapshotCount_ = 0;
+    std::optional<int> status_;  // what deliver returned, once it was called
 
     std::thread thread_;
     std::atomic<bool> cancel_{false};

@@ -310,7 +310,7 @@ int run(const Options& options) {
         try {
             aovs = Aov::parseList(*options.aovs);
         } catch (const std::invalid_argument& e) {
-            return usageError(e.what());
+            return usageError(std::string("--aov ") + e.what());
         }
     }
 

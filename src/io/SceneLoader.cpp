@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -20,6 +21,7 @@
 #include "geometry/Torus.h"
 #include "geometry/Triangle.h"
 #include "integrators/IntegratorRegistry.h"
+#include "io/GltfLoader.h"
 #include "io/ImageReader.h"
 #include "io/InputFile.h"
 #include "io/JsonDocument.h"
@@ -69,7 +71,7 @@ std::vector<std::string> withKeys(std::vector<std::string> common,
 }
 
 // How many shadow rays the Whitted integrator traces towards an area light or the environment per
-// shading point, unless the scene says.
+// shading point, unless the light's "samples" says.
 constexpr int kDefaultShadowSamples = 16;
 
 }  // namespace
@@ -149,11 +151,20 @@ private:
                                         const std::optional<Transform>& transform);
     std::unique_ptr<Shape> loadMeshObject(const Node& node, const char* what,
                                           const std::optional<Transform>& transform);
+    std::unique_ptr<Shape> loadGltfObject(const Node& node, const char* what,
+                                          const std::optional<Transform>& transform);
+    // An instance of the model that the object's "file" names, read by `read` ("model" names it
+    // in messages), with the object's material if it has one, else the model's own.
+    using ModelReader = std::function<std::shared_ptr<TriangleMesh>(const std::filesystem::path&)>;
+    std::unique_ptr<Shape> loadModelObject(const Node& node, const char* what,
+                                           const std::optional<Transform>& transform,
+                                           const std::string& model, const ModelReader& read);
     std::unique_ptr<Shape> loadCsg(const Node& node, const char* what,
                                    const std::optional<Transform>& transform);
     static std::unique_ptr<Shape> placed(std::unique_ptr<Shape> shape,
                                          const std::optional<Transform>& transform);
-    std::shared_ptr<const Mesh> loadMesh(const Node& file);
+    std::shared_ptr<const Mesh> loadMesh(const Node& file, const std::string& model,
+                                         const ModelReader& read);
     // Image files are read once, however many materials (and models) use them.
     std::shared_ptr<const Texture> loadImageTexture(
         const std::filesystem::path& path,
@@ -170,6 +181,8 @@ private:
     void loadLight(const Node& node, const char* what);
     // The top-level "environment" (the root is where a "background" beside it is reported).
     void loadEnvironment(const Node& root);
+    // A light's "samples": the Whitted integrator's shadow rays towards it per shading point.
+    int readShadowSamples(const Node& node) const;
     void loadQuadLight(const Node& node, const char* what);
     void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
@@ -275,6 +288,7 @@ const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectType
         {"plane", "a plane", &Reader::loadShape<Plane>},
         {"triangle", "a triangle", &Reader::loadTriangle},
         {"mesh", "a mesh", &Reader::loadMeshObject},
+        {"gltf", "a glTF model", &Reader::loadGltfObject},
         {"disk", "a disk", &Reader::loadShape<Disk>},
         {"box", "a box", &Reader::loadShape<Box>},
         {"cylinder", "a cylinder", &Reader::loadShape<Cylinder>},
@@ -659,10 +673,31 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadTriangle(
 
 std::unique_ptr<Shape> SceneLoader::Reader::loadMeshObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
+    const auto readObj = [this](const std::filesystem::path& path) {
+        const auto loadTexture = [this](const std::filesystem::path& p,
+                                        ImageReader::Content content) {
+            return loadImageTexture(p, content);
+        };
+        return ObjLoader::load(path, loadTexture, warnings_);
+    };
+    return loadModelObject(node, what, transform, "mesh", readObj);
+}
+
+std::unique_ptr<Shape> SceneLoader::Reader::loadGltfObject(
+    const Node& node, const char* what, const std::optional<Transform>& transform) {
+    const auto readGltf = [this](const std::filesystem::path& path) {
+        return GltfLoader::load(path, warnings_);
+    };
+    return loadModelObject(node, what, transform, "glTF model", readGltf);
+}
+
+std::unique_ptr<Shape> SceneLoader::Reader::loadModelObject(
+    const Node& node, const char* what, const std::optional<Transform>& transform,
+    const std::string& model, const ModelReader& read) {
     checkKeys(node, what, {"type", "file", "material", "transform"});
-    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what));
+    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what), model, read);
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
-    // Without "material", the model's own materials (from its .mtl) are used.
+    // Without "material", the model's own materials (an OBJ's .mtl, a glTF's) are used.
     const Material* material = node.has("material") ? materialOf(node) : nullptr;
     return std::make_unique<Instance>(std::move(mesh), transform.value_or(Transform()), material);
 }
@@ -702,23 +737,21 @@ std::unique_ptr<Shape> SceneLoader::Reader::placed(std::unique_ptr<Shape> shape,
     return std::make_unique<Instance>(std::move(shape), *transform);
 }
 
-std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
+std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
+                                                          const std::string& model,
+                                                          const ModelReader& read) {
     const std::filesystem::path path = baseDir_ / readString(file);
-    const std::string key = std::filesystem::weakly_canonical(path).string();
+    const std::string key = model + " " + std::filesystem::weakly_canonical(path).string();
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
-        const auto loadTexture = [this](const std::filesystem::path& p,
-                                        ImageReader::Content content) {
-            return loadImageTexture(p, content);
-        };
-        std::shared_ptr<TriangleMesh> triangles = ObjLoader::load(path, loadTexture, warnings_);
+        std::shared_ptr<TriangleMesh> triangles = read(path);
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
         meshes_[key] = mesh;
         scene_.statistics().uniqueTriangles += mesh->triangles().triangleCount();
         scene_.statistics().meshBytes += mesh->memoryBytes();
         return mesh;
     } catch (const InputError& e) {
-        fail(file, "mesh " + inQuotes(path.string()) + ": " + e.message());
+        fail(file, model + " " + inQuotes(path.string()) + ": " + e.message());
     }
 }
 
@@ -818,9 +851,12 @@ void SceneLoader::Reader::loadEnvironment(const Node& root) {
     }
     auto environment =
         EnvironmentLight::create(ObjectParameters(*this, node, what), *std::move(map));
-    environment->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
-                                                      : kDefaultShadowSamples);
+    environment->setShadowSamples(readShadowSamples(node));
     scene_.setEnvironment(std::move(environment));
+}
+
+int SceneLoader::Reader::readShadowSamples(const Node& node) const {
+    return node.has("samples") ? readInt(node["samples"], 1) : kDefaultShadowSamples;
 }
 
 void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
@@ -859,8 +895,7 @@ const Material* SceneLoader::Reader::emitterOf(const Color& radiance) {
 
 void SceneLoader::Reader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
                                        std::unique_ptr<Light> light) {
-    light->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
-                                                : kDefaultShadowSamples);
+    light->setShadowSamples(readShadowSamples(node));
     surface->setAreaLight(light.get());
     scene_.addShape(std::move(surface));
     scene_.addLight(std::move(light));

@@ -15,7 +15,8 @@ namespace lancer {
 // leaving the scene with unit direction d (the map's rotation about +y undone) sees the map at
 // u = 0.5 + atan2(d.x, -d.z) / (2 pi) across and v = acos(d.y) / pi down, bilinearly (the
 // scene format's "environment"). Directions are sampled in proportion to the map's luminance
-// times sin(theta), the Jacobian of the mapping, through a Distribution2D over its texels.
+// times sin(theta), the Jacobian of the mapping: a texel's cell through a Distribution2D (by the
+// cell's average luminance), then a point in the cell in proportion to the bilinear luminance.
 class EnvironmentLight final : public Light {
 public:
     // The scene file's "environment": its keys besides "file" (read by the loader, which gives
@@ -43,13 +44,18 @@ public:
 private:
     // The bilinear lookup at (u, v): u wraps around, v is clamped at the poles.
     Color lookUp(const Vec2& uv) const;
+    // A point of texel (x, y)'s cell in proportion to the bilinear luminance there, from u.
+    Vec2 sampleInCell(int x, int y, Vec2 u) const;
+    // The density over the map's (u, v) with which sample() picks a point.
+    float mapDensity(const Vec2& uv) const;
     Vec3 toMap(const Vec3& world) const;
     Vec3 toWorld(const Vec3& map) const;
 
     Image map_;
     float cosRotate_, sinRotate_;
-    Distribution2D distribution_;
-    Color radianceIntegral_;  // the integral of the radiance over the sphere of directions
+    std::vector<float> cellAverage_;  // each texel's cell's average luminance
+    Distribution2D distribution_;     // of the cells, by average luminance times sin(theta)
+    Color radianceIntegral_;          // the integral of the radiance over the sphere of directions
 };
 
 }  // namespace lancer

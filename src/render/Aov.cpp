@@ -34,10 +34,11 @@ const Registry<Aov>& Aov::types() {
 }
 
 std::vector<const Aov*> Aov::parseList(const std::string& list) {
-    const std::invalid_argument emptyName("--aov \"" + list +
-                                          "\": an empty name; expected names separated by commas "
-                                          "from " +
-                                          types().quotedNames());
+    // Each message starts with the list, for the option's name to go before it.
+    const std::string quotedList = "\"" + list + "\": ";
+    const std::invalid_argument emptyName(
+        quotedList + "an empty name; expected names separated by commas from " +
+        types().quotedNames());
     // getline would skip the empty name after a trailing comma.
     if (list.empty() || list.back() == ',') throw emptyName;
     std::vector<const Aov*> aovs;
@@ -46,9 +47,9 @@ std::vector<const Aov*> Aov::parseList(const std::string& list) {
         if (name.empty()) throw emptyName;
         const Aov* aov = types().find(name);
         if (!aov)
-            throw std::invalid_argument("--aov: " + unknownName("output", name, types().names()));
+            throw std::invalid_argument(quotedList + unknownName("output", name, types().names()));
         if (std::find(aovs.begin(), aovs.end(), aov) != aovs.end())
-            throw std::invalid_argument("--aov \"" + list + "\": \"" + name + "\" is named twice");
+            throw std::invalid_argument(quotedList + "\"" + name + "\" is named twice");
         aovs.push_back(aov);
     }
     return aovs;

@@ -21,7 +21,7 @@ struct Aov {
 
     // The outputs a comma-separated list names ("albedo,normal"), in its order, each once.
     // Throws std::invalid_argument for an empty list, an empty or unknown name (with the valid
-    // ones and a suggestion) or a repeated one.
+    // ones and a suggestion) or a repeated one; its message starts with the quoted list.
     static std::vector<const Aov*> parseList(const std::string& list);
 
     // Where this output goes beside the image `output`: out.png -> out.albedo.exr.

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "LancerRun.h"
+#include "PfmFile.h"
 #include "math/Vec3.h"
 #include "scene/Camera.h"
 
@@ -145,6 +146,21 @@ TEST(CliAov, PlaneDepthIsTheClosedFormAndItsNormalFacesTheCamera) {
     }
 }
 
+// The normal output is the shading normal, normal map included: a constant map (0.8, 0.5, 0.9) is
+// n = 0.6 T + 0.8 N in the tangent frame, and on the plane y = 0 (uv = (x, z)) T is +x.
+TEST(CliAov, NormalIsTheMappedShadingNormal) {
+    const TempFolder maps;
+    writePfm(lancer::Image(4, 4, Color(0.8f, 0.5f, 0.9f)), maps / "tilt.pfm");
+    const TestCamera camera{{0.2, 2, 0.5}, {0, 0, 0}, 12, 9};
+    const nlohmann::json scene = sceneWith(
+        camera, {{"mapped", {{"diffuse", 0.5}, {"normal_map", (maps / "tilt.pfm").string()}}}},
+        {{{"type", "plane"}, {"point", {0, 0, 0}}, {"normal", {0, 1, 0}}, {"material", "mapped"}}});
+    const Image normal = renderWithAovs(scene, {}, "normal").images.at("normal");
+    for (int y = 0; y < camera.height; ++y)
+        for (int x = 0; x < camera.width; ++x)
+            expectRgb(normal, x, y, Vec3d(0.6, 0.8, 0), "mapped normal");
+}
+
 // A mirror (the plane z = 0) that shows a checkered floor (y = 0, uv = (x, z)): the albedo is the
 // floor's checker at the reflected ray's hit, the normal and depth are the mirror's.
 TEST(CliAov, AlbedoIsTheCheckerSeenThroughAMirror) {
@@ -192,6 +208,22 @@ TEST(CliAov, AlbedoIsTheCheckerSeenThroughAMirror) {
         }
     EXPECT_GT(throughTheMirror, 50);
     EXPECT_GT(onTheFloor, 50);
+}
+
+// With no bounce allowed, the mirror's pixels end on the mirror, which has no diffuse colour.
+TEST(CliAov, AlbedoIsZeroWhereMaxDepthStopsTheRayAtAMirror) {
+    const TestCamera camera{{0, 0, 3}, {0, 0, 0}, 8, 6};
+    const nlohmann::json scene = sceneWith(
+        camera, {{"mirror", {{"diffuse", 0}, {"reflection", 1}}}, {"wall", {{"diffuse", 0.6}}}},
+        {{{"type", "plane"}, {"point", {0, 0, 0}}, {"normal", {0, 0, 1}}, {"material", "mirror"}},
+         {{"type", "plane"}, {"point", {0, 0, 5}}, {"normal", {0, 0, 1}}, {"material", "wall"}}});
+    const Image seen = renderWithAovs(scene, {}, "albedo").images.at("albedo");
+    const Image stopped = renderWithAovs(scene, {"--max-depth", "0"}, "albedo").images.at("albedo");
+    for (int y = 0; y < camera.height; ++y)
+        for (int x = 0; x < camera.width; ++x) {
+            expectRgb(seen, x, y, Vec3d(0.6), "the wall behind the camera, in the mirror");
+            expectRgb(stopped, x, y, Vec3d(0), "the mirror at max_depth 0");
+        }
 }
 
 // Glass splits a ray; the branch that carries the most light is followed: at normal incidence on

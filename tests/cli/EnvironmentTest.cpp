@@ -68,6 +68,36 @@ TEST(CliEnvironment, OneBrightTexelIsSeenWhereTheMappingSaysAndTurnedByRotate) {
     }
 }
 
+// An 8-bit map holds sRGB-encoded colour: a binary PPM whose every texel is 128 is seen as
+// ((128 / 255 + 0.055) / 1.055)^2.4 = 0.2158605 everywhere, times the intensity.
+TEST(CliEnvironment, AnEightBitMapIsSrgbDecoded) {
+    const TempFolder folder;
+    folder.write("map.ppm", "P6\n4 2\n255\n" + std::string(4 * 2 * 3, static_cast<char>(128)));
+    const double decoded = std::pow((128 / 255.0 + 0.055) / 1.055, 2.4);
+    for (const Vec3d& d : {Vec3d(0, 0, -1), Vec3d(0.6, 0.8, 0), Vec3d(0.1, -1, 0)})
+        EXPECT_NEAR(centreGreen(lookingAlong(d, folder / "map.ppm", "whitted")), 2 * decoded, 1e-5);
+}
+
+// A negative texel (a float map may hold one) would make the sampling density negative and
+// subtract light: the map is refused with one line naming the scene's "file" value. (Infinite
+// and NaN texels are read as 0 by the image reader, as for textures.)
+TEST(CliEnvironment, AMapWithANegativeTexelIsRefused) {
+    for (const float bad : {-1.0f, -1e-30f}) {
+        const TempFolder folder;
+        lancer::Image map(4, 2, Color(1));
+        map.at(1, 0).g = bad;
+        writePfm(map, folder / "map.pfm");
+        folder.write("scene.json", R"({ "camera": { "position": [0, 0, 0], "look_at": [0, 0, -1] },
+  "environment": { "file": "map.pfm" } })");
+        const RunResult run = runLancer({"scene.json", "-o", "out.png"}, folder.path());
+        EXPECT_EQ(run.exitStatus, 2) << run;
+        ASSERT_EQ(run.errorLines().size(), 1u) << run;
+        EXPECT_EQ(run.errorLines()[0],
+                  "scene.json:2:28: error: the environment map's texel (1, 0) is not a finite, "
+                  "non-negative colour");
+    }
+}
+
 // Reflections and refractions that leave the scene see the map too: a mirror floor (y = 0) seen
 // along d mirrored in it shows the texel, times its reflectance 0.5; a glass slab of parallel
 // faces (the ray leaves it along the direction it entered) seen from below along d shows it
@@ -225,33 +255,31 @@ protected:
     Radiance irradiance_;
 };
 
-// The noise: within a texel the bilinear map varies while the sampling density is constant
-// (most where the sun's light spills into its neighbours' cells), some 100% per sample here.
-// The tolerances are about four times the spread measured over the 144 pixels, and four standard
-// errors of their mean.
+// The tolerances are about three times the farthest pixel's error measured over the 144 pixels,
+// and for the mean (measured within 0.1%) about four standard errors.
 
 // 256 samples per pixel, each a light sample and a BSDF sample weighted by MIS (the farthest
-// pixel measured 5.7% off): the mean within 1%, each pixel within 12%.
+// pixel measured 2.6% off): the mean within 0.5%, each pixel within 8%.
 TEST_F(CliEnvironmentFloor, PathShowsKdEOverPi) {
     const Image image = renderScene(floorUnderTheSky(map(), "path", 256, 1)).image;
-    expectUniformImage(image, lambertian(0.5 / kPiD), 0.01, 0.12);
+    expectUniformImage(image, lambertian(0.5 / kPiD), 0.005, 0.08);
 }
 
 // 1024 importance-sampled shadow rays per shading point, one sample per pixel (the farthest
-// pixel measured 5.6% off): the mean within 1%, each pixel within 12%.
+// pixel measured 2.4% off): the mean within 0.5%, each pixel within 8%.
 TEST_F(CliEnvironmentFloor, WhittedShowsKdE) {
     const Image image = renderScene(floorUnderTheSky(map(), "whitted", 1, 1024)).image;
-    expectUniformImage(image, lambertian(0.5), 0.01, 0.12);
+    expectUniformImage(image, lambertian(0.5), 0.005, 0.08);
 }
 
 // Every element (and vertex) gathers the environment with 1024 importance-sampled rays; the image
-// interpolates their values (the farthest pixel measured 4.8% off): the mean within 1.5%, each
-// pixel within 10%.
+// interpolates their values (the farthest pixel measured 1.8% off): the mean within 0.5%, each
+// pixel within 6%.
 TEST_F(CliEnvironmentFloor, RadiosityShowsKdEOverPi) {
     json scene = floorUnderTheSky(map(), "radiosity", 1, 1024);
     scene["radiosity"] = {{"patch_size", 0.5}};
     const Image image = renderScene(scene).image;
-    expectUniformImage(image, lambertian(0.5 / kPiD), 0.015, 0.10);
+    expectUniformImage(image, lambertian(0.5 / kPiD), 0.005, 0.06);
 }
 
 // --- The white furnace --------------------------------------------------------------------------

@@ -10,6 +10,7 @@
 #include <functional>
 #include <numbers>
 #include <sstream>
+#include <utility>
 
 #include "LancerRun.h"
 
@@ -175,6 +176,28 @@ TEST_P(CliNormalMap, LinearBumpRampTiltsByItsSlope) {
 }
 
 INSTANTIATE_TEST_SUITE_P(FlatSurfaces, CliNormalMap, testing::ValuesIn(flatSurfaces()), CaseName());
+
+// A sphere's frame: u is longitude (dpdu along +x where the sphere faces +z), v latitude (dpdv
+// along +y). The camera sees a patch 0.0035 wide around (0, 0, 1), over which the normal turns by
+// 0.1 degrees: the tolerance covers that (the cosine's change is below 1e-3 for kd = 0.5).
+TEST(CliNormalMapFlat, SphereTiltsInItsLongitudeAndLatitudeFrame) {
+    const TempFolder folder;
+    const Direction towardsLight = unit({0.5, 0.6, 1});
+    json scene = litScene({{"type", "sphere"}, {"center", {0, 0, 0}}, {"radius", 1}}, json::object());
+    scene["camera"] = {{"position", {0, 0, 5}}, {"look_at", {0, 0, 0}}, {"vfov", 0.05}};
+    scene["render"]["width"] = scene["render"]["height"] = 4;
+    scene["lights"][0]["direction"] = {-towardsLight.x, -towardsLight.y, -towardsLight.z};
+    for (const auto& [texel, normal] : {std::pair{Rgb{0.8f, 0.5f, 0.9f}, Direction{0.6, 0, 0.8}},
+                                        std::pair{Rgb{0.5f, 0.8f, 0.9f}, Direction{0, 0.6, 0.8}}}) {
+        const fs::path map = folder.write("tilt.pfm", constantMap(texel));
+        scene["materials"]["mapped"]["normal_map"] = map.string();
+        const Image image = renderScene(scene).image;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                EXPECT_NEAR(image.at(x, y)[0], kAlbedo * dotOf(normal, towardsLight), 1e-3)
+                    << "pixel " << x << ", " << y << " of the map " << texel[0] << ", " << texel[1];
+    }
+}
 
 // A map of constant (0.5, 0.5, 1) leaves every normal as it was: a sphere, a plane and a
 // triangle, with mirror reflections between them, render as without it. The bound is float

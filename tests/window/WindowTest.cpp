@@ -157,6 +157,24 @@ TEST_F(LiveWindow, ShowsTheExposedAndToneMappedImageAsThePngHoldsIt) {
     EXPECT_GT(maxAbsoluteDifference(loadImage(folder_ / "plain.png"), saved), 10);
 }
 
+// The auxiliary outputs are written with the image, the same as without the window.
+TEST_F(LiveWindow, WritesTheAuxiliaryOutputsWithTheImage) {
+    std::vector<std::string> arguments = withWindow(quickRender("out.png"));
+    arguments.insert(arguments.end(), {"--aov", "depth"});
+    LancerProcess lancer(arguments, folder_.path());
+    const X11Window window = findWindow();
+    ASSERT_TRUE(window.waitForTitle("done", kWait)) << "title: " << window.title();
+    window.close();
+    EXPECT_EQ(lancer.wait(kWait).exitStatus, 0);
+    EXPECT_EQ(folder_.entries(),
+              (std::vector<std::string>{"out.depth.exr", "out.png", "scene.json"}));
+
+    std::vector<std::string> plain = quickRender("plain.png");
+    plain.insert(plain.end(), {"--aov", "depth"});
+    ASSERT_EQ(runLancer(plain, folder_.path()).exitStatus, 0);
+    EXPECT_EQ(readFile(folder_ / "plain.depth.exr"), readFile(folder_ / "out.depth.exr"));
+}
+
 TEST_F(LiveWindow, SSavesWhatTheWindowShowsNextToTheOutput) {
     LancerProcess lancer(withWindow(quickRender("out.png")), folder_.path());
     const X11Window window = findWindow();
