@@ -17,6 +17,10 @@ struct RenderSettings {
     // The widest and tallest image the scene file and --width, --height accept (a 32768 x 32768
     // film takes 12 GiB); the memory the image's buffers need is checked as well.
     static constexpr int kMaxImageSide = 32768;
+    // The most samples per pixel the scene file ("spp", "max_spp", "min_spp") and --spp accept:
+    // the render stops between a tile's rows when interrupted, and a row of 2^20 samples a pixel
+    // still takes seconds, not hours (2^30 took longer than anyone waits, even for 8 x 6 pixels).
+    static constexpr int kMaxSamplesPerPixel = 1 << 20;
 
     int width = 640;
     int height = 480;
