@@ -165,6 +165,13 @@ const BadInput kBadInputs[] = {
      "100000 x 100000 pixels",
      2,
      {{"t.pfm", "corpus:image/huge-declared.pfm"}}},
+    // Found by fuzz_image: 60 bytes declaring 10000 x 10000 pixels took 1.2 GB and 10 s.
+    {"TexturePfmShortOfItsPixels",
+     texturedScene("t.pfm"),
+     kRender,
+     "corrupt or truncated PFM",
+     2,
+     {{"t.pfm", "corpus:image/pfm-short-of-its-pixels.pfm"}}},
     {"TextureTgaClaimingHugeSize",
      texturedScene("t.tga"),
      kRender,
