@@ -25,7 +25,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                        : input.substr(separator + kSeparator.size()));
     const auto obj = FuzzFolder::write("model.obj", input.substr(0, separator));
     // Textures are the image reader's target: any name gives a constant one here.
-    const auto anyTexture = [](const std::filesystem::path&) {
+    const auto anyTexture = [](const std::filesystem::path&, lancer::ImageReader::Content) {
         return std::shared_ptr<const lancer::Texture>(
             std::make_shared<lancer::ConstantTexture>(lancer::Color(0.5f)));
     };
