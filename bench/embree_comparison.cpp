@@ -66,7 +66,8 @@ double secondsSince(Clock::time_point start) {
 TriangleMesh loadObj(const fs::path& path) {
     std::vector<std::string> warnings;
     // Textures do not matter here: every map_Kd falls back to its Kd colour.
-    const auto noTexture = [](const fs::path&) -> std::shared_ptr<const Texture> {
+    const auto noTexture = [](const fs::path&,
+                              ImageReader::Content) -> std::shared_ptr<const Texture> {
         return nullptr;
     };
     return *ObjLoader::load(path, noTexture, warnings);

@@ -41,6 +41,9 @@ LiveRender::~LiveRender() {
 
 void LiveRender::start() {
     RenderOptions options = options_;
+    // Only the render that goes to the output writes auxiliary outputs; the views after it
+    // would compute them for nothing.
+    if (status_) options.aovs.clear();
     options.cancel = &cancel_;
     options.previewBlockSizes = kPreviewBlockSizes;
     options.onTileDone = [this](const FinishedTile& tile) {
@@ -65,8 +68,7 @@ RenderResult LiveRender::stop() {
     return result;
 }
 
-int LiveRender::run(const std::function<int(const RenderResult&)>& deliver) {
-    std::optional<int> status;  // what deliver returned, once it was called
+int LiveRender::run(const std::function<int(RenderResult&)>& deliver) {
     start();
     for (;;) {
         bool close = options_.cancel && options_.cancel->load();
@@ -90,8 +92,8 @@ int LiveRender::run(const std::function<int(const RenderResult&)>& deliver) {
             }
         }
         if (finished_ && thread_.joinable()) {
-            const RenderResult result = stop();
-            if (!status) status = deliver(result);
+            RenderResult result = stop();
+            if (!status_) status_ = deliver(result);
             // Once the output is written: a title saying "done" means the file is there.
             char done[96];
             std::snprintf(done, sizeof done, "done in %.2f s  (S: save, Esc: close)",
@@ -101,10 +103,10 @@ int LiveRender::run(const std::function<int(const RenderResult&)>& deliver) {
         // While no render has completed one runs, so there is something to deliver.
         if (close) {
             if (thread_.joinable()) {
-                const RenderResult result = stop();
-                if (!status) status = deliver(result);
+                RenderResult result = stop();
+                if (!status_) status_ = deliver(result);
             }
-            return *status;
+            return *status_;
         }
         if (moved) {
             if (thread_.joinable()) stop();
@@ -122,7 +124,9 @@ void LiveRender::saveSnapshot() {
                 output_.extension().string());
     while (std::filesystem::exists(path));
     try {
-        ImageWriter::write(viewer_.image(), path);
+        Image image = viewer_.image();
+        viewer_.toneMapper().mapForOutput(image, ImageWriter::storesLinear(path));
+        ImageWriter::write(image, path);
         if (!quiet_) std::cerr << "lancer: snapshot written to " << path.string() << '\n';
     } catch (const std::exception& e) {
         std::cerr << "lancer: error: " << e.what() << '\n';

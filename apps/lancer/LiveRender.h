@@ -33,9 +33,9 @@ public:
 
     // Runs until the window is closed. The first render that completes (the scene's camera,
     // unless the user moved it before) goes to `deliver` at once, and the window stays open; if
-    // the window is closed before, the unfinished render goes to `deliver` then. Returns what
-    // `deliver` returned.
-    int run(const std::function<int(const RenderResult&)>& deliver);
+    // the window is closed before, the unfinished render goes to `deliver` then (which may
+    // change it: the window keeps its own copy). Returns what `deliver` returned.
+    int run(const std::function<int(RenderResult&)>& deliver);
 
 private:
     // Starts rendering the scene's camera in the background.
@@ -52,6 +52,7 @@ private:
     bool quiet_;
     CameraOrbit orbit_;
     int snapshotCount_ = 0;
+    std::optional<int> status_;  // what deliver returned, once it was called
 
     std::thread thread_;
     std::atomic<bool> cancel_{false};

@@ -55,8 +55,9 @@ bool startVideo(std::string& error) {
 
 }  // namespace
 
-Viewer::Viewer(const std::string& name, int width, int height)
+Viewer::Viewer(const std::string& name, int width, int height, const ToneMapper& toneMapper)
     : name_(name),
+      toneMapper_(toneMapper),
       image_(width, height),
       pixels8_(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3, 0),
       changed_{0, 0, width, height} {}
@@ -69,11 +70,11 @@ std::string Viewer::libraryVersion() {
 }
 
 std::unique_ptr<Viewer> Viewer::open(const std::string& name, int width, int height,
-                                     std::string& error) {
+                                     const ToneMapper& toneMapper, std::string& error) {
     // Ctrl-C stays the program's: SDL would turn it into a quit event.
     SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
     if (!startVideo(error)) return nullptr;
-    std::unique_ptr<Viewer> viewer(new Viewer(name, width, height));
+    std::unique_ptr<Viewer> viewer(new Viewer(name, width, height, toneMapper));
 
     SDL_Rect screen{0, 0, width, height};
     SDL_GetDisplayUsableBounds(0, &screen);
@@ -121,8 +122,8 @@ void Viewer::showTile(const Image& film, const PixelWindow& tile) {
     std::lock_guard lock(mutex_);
     for (int y = tile.y0; y < tile.y1; ++y)
         for (int x = tile.x0; x < tile.x1; ++x) {
-            const Color& c = film.at(x, y);
-            image_.at(x, y) = c;
+            image_.at(x, y) = film.at(x, y);
+            const Color c = toneMapper_.display(film.at(x, y));
             unsigned char* p = &pixels8_[3 * (static_cast<std::size_t>(y) *
                                                   static_cast<std::size_t>(image_.width()) +
                                               static_cast<std::size_t>(x))];

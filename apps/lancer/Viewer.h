@@ -9,6 +9,7 @@
 #include "ViewerEvent.h"
 #include "image/Image.h"
 #include "render/Renderer.h"
+#include "render/ToneMapper.h"
 
 struct SDL_Renderer;
 struct SDL_Texture;
@@ -21,10 +22,11 @@ namespace lancer {
 // thread that opened it, which must call poll() often to keep it alive and up to date.
 class Viewer {
 public:
-    // A window titled `name` for a width x height image, scaled down to fit the screen if larger.
-    // Null, with the reason in `error`, when there is no display to open it on.
+    // A window titled `name` for a width x height image, scaled down to fit the screen if larger,
+    // showing it as 8-bit outputs store it (through `toneMapper`). Null, with the reason in
+    // `error`, when there is no display to open it on.
     static std::unique_ptr<Viewer> open(const std::string& name, int width, int height,
-                                        std::string& error);
+                                        const ToneMapper& toneMapper, std::string& error);
     // "SDL2 2.26.5": the version of the SDL library linked, for lancer --version.
     static std::string libraryVersion();
     ~Viewer();
@@ -38,8 +40,9 @@ public:
     void showFilm(const Image& film);
     // The title becomes "NAME  STATUS".
     void setStatus(const std::string& status);
-    // What the window shows, in linear radiance.
+    // What the window shows, in linear radiance (before the tone mapping).
     Image image() const;
+    const ToneMapper& toneMapper() const { return toneMapper_; }
 
     // --- the thread that opened the window ---
 
@@ -48,9 +51,10 @@ public:
     std::vector<ViewerEvent> poll(std::chrono::milliseconds timeout);
 
 private:
-    Viewer(const std::string& name, int width, int height);
+    Viewer(const std::string& name, int width, int height, const ToneMapper& toneMapper);
 
     std::string name_;
+    ToneMapper toneMapper_;
     SDL_Window* window_ = nullptr;
     SDL_Renderer* renderer_ = nullptr;
     SDL_Texture* texture_ = nullptr;

@@ -32,7 +32,9 @@
 #include "io/InputFile.h"
 #include "io/SceneLoader.h"
 #include "radiosity/RadiositySolver.h"
+#include "render/Aov.h"
 #include "render/Renderer.h"
+#include "render/ToneMapper.h"
 #include "scene/InputError.h"
 #include "scene/RenderSettings.h"
 #include "util/DidYouMean.h"
@@ -54,6 +56,7 @@ struct Options {
     int threads = 0;
     std::uint64_t seed = 0;
     std::optional<std::string> crop;
+    std::optional<std::string> aovs;  // --aov's list
     bool window = false;
     bool quiet = false;
     bool stats = false;
@@ -123,14 +126,19 @@ std::string unexpectedArguments(const CLI::App& app, int argc, char** argv,
     return std::string(error.what()) + " (see lancer --help)";
 }
 
-// The memory the image's buffers take, in bytes: the render's film and what the writer needs;
-// with the window, also its preview film, its own copy and the 8-bit pixels it shows (ours and
-// SDL's).
-std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output, bool window) {
+// The memory the image's buffers take, in bytes: the render's film and what the writer needs, and
+// the same for each auxiliary output; with the window, also its preview film, its own copy and
+// the 8-bit pixels it shows (ours and SDL's).
+std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output,
+                          const std::vector<const Aov*>& aovs, bool window) {
     const std::uint64_t pixels =
         static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
     std::uint64_t bytes =
         pixels * sizeof(Color) + ImageWriter::memoryNeeded(output, settings.width, settings.height);
+    for (const Aov* aov : aovs)
+        bytes +=
+            pixels * sizeof(Color) +
+            ImageWriter::memoryNeeded(aov->pathBeside(output), settings.width, settings.height);
     if (window) bytes += pixels * (2 * sizeof(Color) + 2 * 3);
     return bytes;
 }
@@ -300,6 +308,14 @@ int run(const Options& options) {
     if (fs::is_directory(output))
         return fail(kExitFailure, "lancer: error: " + output.string() +
                                       ": cannot write the image (it is a folder)");
+    std::vector<const Aov*> aovs;
+    if (options.aovs) {
+        try {
+            aovs = Aov::parseList(*options.aovs);
+        } catch (const std::invalid_argument& e) {
+            return usageError(std::string("--aov ") + e.what());
+        }
+    }
 
     std::vector<std::string> warnings;
     Scene scene = SceneLoader::loadFile(options.scene, warnings);
@@ -317,7 +333,7 @@ int run(const Options& options) {
     // image that cannot fit before the first of them (or the radiosity solve) takes its time.
     // --max-memory replaces the machine's memory as the bound: higher where swap makes up the
     // rest, lower to keep a render from crowding others out.
-    const std::uint64_t needed = imageMemory(settings, output, options.window);
+    const std::uint64_t needed = imageMemory(settings, output, aovs, options.window);
     const std::uint64_t allowed =
         options.maxMemory ? *parseMemorySize(*options.maxMemory) : physicalMemory();
     if (allowed > 0 && needed > allowed)
@@ -328,9 +344,12 @@ int run(const Options& options) {
                           (options.maxMemory ? " --max-memory allows"
                                              : " this machine has (--max-memory overrides)"));
 
+    const ToneMapper toneMapper(settings.exposure, settings.tonemap);
+
     RenderOptions renderOptions;
     renderOptions.threads = options.threads;
     renderOptions.seed = options.seed;
+    renderOptions.aovs = aovs;
     if (options.crop) {
         std::string error;
         renderOptions.crop = parseCrop(*options.crop, settings.width, settings.height, error);
@@ -344,7 +363,7 @@ int run(const Options& options) {
     if (options.window) {
         std::string error;
         viewer = Viewer::open("lancer: " + fs::path(options.scene).filename().string(),
-                              settings.width, settings.height, error);
+                              settings.width, settings.height, toneMapper, error);
         if (!viewer && !options.quiet)
             std::cerr << "lancer: warning: --window: " << error << "; rendering without it\n";
     }
@@ -367,10 +386,14 @@ int run(const Options& options) {
         return InterruptSignals::exitStatus();
     }
 
-    // Writes the image as soon as its render ends; returns the exit status.
-    const auto deliver = [&](const RenderResult& result) {
+    // Writes the image and its auxiliary outputs as soon as its render ends; returns the exit
+    // status.
+    const auto deliver = [&](RenderResult& result) {
         InterruptSignals::setPhase(InterruptSignals::Phase::Saving);
+        toneMapper.mapForOutput(result.film, ImageWriter::storesLinear(output));
         ImageWriter::write(result.film, output);
+        for (std::size_t i = 0; i < aovs.size(); ++i)
+            ImageWriter::write(result.aovFilms[i], aovs[i]->pathBeside(output));
         InterruptSignals::setPhase(InterruptSignals::Phase::Working);
         if (result.interrupted) {
             std::cerr << "lancer: interrupted; the part rendered so far was written to "
@@ -397,7 +420,7 @@ int run(const Options& options) {
     renderOptions.onTileDone = [&](const FinishedTile& tile) {
         progress.update(tile.tilesDone, tile.tilesTotal);
     };
-    const RenderResult result = Renderer(scene, *integrator).render(renderOptions);
+    RenderResult result = Renderer(scene, *integrator).render(renderOptions);
     progress.finish();
     return deliver(result);
 }
@@ -423,7 +446,8 @@ int main(int argc, char** argv) {
     app.add_option(
         "-o,--output", options.output,
         "Output image; the extension picks the format: .png .jpg .bmp .tga .tif (8-bit sRGB), "
-        ".exr .hdr .pfm (linear float). Default: the scene's name with .png");
+        ".exr .hdr .pfm (linear float); the scene's exposure and tonemap apply. Default: the "
+        "scene's name with .png");
     app.add_option("--width", options.width, "Image width in pixels (overrides the scene)")
         ->check(CLI::Range(1, RenderSettings::kMaxImageSide));
     app.add_option("--height", options.height, "Image height in pixels (overrides the scene)")
@@ -455,6 +479,10 @@ int main(int argc, char** argv) {
             ""));
     app.add_option("--crop", options.crop,
                    "Render only the pixels X0,Y0,X1,Y1 (inclusive-exclusive)");
+    app.add_option("--aov", options.aovs,
+                   "Also write auxiliary outputs beside the image, OUT.NAME.exr, for a denoiser: "
+                   "any of " +
+                       Aov::types().quotedNames() + ", separated by commas");
     app.add_flag("--window", options.window, "Show the image in a window while it renders");
     app.add_flag("--quiet", options.quiet, "No progress bar or summary, only errors");
     app.add_flag("--stats", options.stats,

@@ -16,11 +16,11 @@ class Scene;
 class Shape;
 struct Hit;
 
-// The lights a path tracer samples: the scene's own (point, directional, spot, quad, sphere) and
-// an AreaLight for each emissive primitive of the shapes in the BVH (a triangle of a model, per
-// instance, a sphere, a quad...), on the sides its shape emits from. Infinite planes that emit are
-// found only by rays that hit them. A light is picked in proportion to its power (the average of
-// its channels), the scene's radius bounding the power of lights at infinity.
+// The lights a path tracer samples: the scene's own (point, directional, spot, quad, sphere, the
+// environment) and an AreaLight for each emissive primitive of the shapes in the BVH (a triangle
+// of a model, per instance, a sphere, a quad...), on the sides its shape emits from. Infinite
+// planes that emit are found only by rays that hit them. A light is picked in proportion to its
+// power (the average of its channels), the scene's radius bounding the power of lights at infinity.
 class LightSampler {
 public:
     explicit LightSampler(const Scene& scene);

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "geometry/Shape.h"
+#include "lights/EnvironmentLight.h"
 #include "materials/Bsdf.h"
 #include "materials/Material.h"
 #include "sampling/Sampler.h"
@@ -64,7 +65,14 @@ Color PathIntegrator::radiance(const Ray& cameraRay, float, Sampler& sampler,
         ++rayCount;
         const std::optional<Hit> found = scene_.intersect(ray, kInfinity);
         if (!found) {
-            L += throughput * scene_.background();
+            float weight = 1;
+            // A BSDF ray escaping to an environment that light sampling could also have found.
+            const Light* environment = scene_.environment();
+            if (environment && bounces > 0 && !afterDelta)
+                weight = powerHeuristic(lastBsdfPdf,
+                                        lights_.probability(environment) *
+                                            environment->pdf(lastVertex, ray.direction, Hit{}));
+            L += throughput * scene_.background(ray.direction) * weight;
             break;
         }
         const Hit& hit = *found;
@@ -93,7 +101,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, float, Sampler& sampler,
         const Vec2 uBsdf = sampler.get2D();
         const float uRoulette = sampler.get1D();
 
-        const Bsdf bsdf(material, hit);
+        const Bsdf bsdf(material, hit, wo);
         if (bsdf.hasNonDeltaLobe())
             L += throughput * sampleOneLight(hit, bsdf, wo, uLightChoice, uLight, rayCount);
 

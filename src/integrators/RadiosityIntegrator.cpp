@@ -64,7 +64,7 @@ Color RadiosityIntegrator::highlights(const Hit& hit, const Bsdf& bsdf, const Ve
             const LightSample ls = light->sample(hit.p, u);
             const float cosTheta = dot(n, ls.wi);
             if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
-            const Color f = bsdf.glossyF(wo, ls.wi);
+            const Color f = bsdf.glossyF(wo, ls.wi, light->isDelta());
             if (f.isBlack()) continue;
             sum += cosTheta * f * ls.irradiance *
                    ShadowRays::transmittance(scene(), hit, ls, rayCount);

@@ -49,7 +49,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     const Ray& ray = path.ray;
     ++rayCount;
     std::optional<Hit> found = scene_.intersect(ray, kInfinity);
-    if (!found) return scene_.background();
+    if (!found) return scene_.background(ray.direction);
     Hit& hit = *found;
     // Directions are unit vectors, so t is a distance.
     const float distance = path.distance + hit.t;
@@ -59,7 +59,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     const Vec3 wo = -normalize(ray.direction);
     // Shade the side the ray arrived on.
     const bool front = hit.frontFace(ray);
-    const Bsdf bsdf(material, hit, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(material, hit, wo, Bsdf::Weights::AsGiven);
 
     Color L;
     if (front || hit.shape->emitsOnBothSides()) L += material.emission();
@@ -72,6 +72,15 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     for (std::size_t i = 0; i < count; ++i)
         L += rays[i].weight * trace({hit.spawnRay(rays[i].direction), distance, path.spread},
                                     depth + 1, sampler, rayCount);
+    // Distribution ray tracing: one microfacet normal per rough lobe and pixel sample.
+    for (std::size_t lobe = 0; lobe < bsdf.roughLobeCount(); ++lobe) {
+        std::array<SpecularRay, 2> traced;
+        const std::size_t tracedCount = bsdf.tracedRays(lobe, wo, sampler.get2D(), traced);
+        for (std::size_t i = 0; i < tracedCount; ++i)
+            L +=
+                traced[i].weight * trace({hit.spawnRay(traced[i].direction), distance, path.spread},
+                                         depth + 1, sampler, rayCount);
+    }
     return L;
 }
 
@@ -85,15 +94,15 @@ Color WhittedIntegrator::directLighting(const Hit& hit, const Bsdf& bsdf, const 
                                         bool front, Sampler& sampler,
                                         std::uint64_t& rayCount) const {
     // V_l E_l (kd max(0, n.L) + ks max(0, n.h)^n [n.L > 0]) for one sample of a light.
-    const auto shade = [&](const LightSample& ls) {
-        const Color brdfCos = bsdf.localResponse(wo, ls.wi, front);
+    const auto shade = [&](const LightSample& ls, bool deltaLight) {
+        const Color brdfCos = bsdf.localResponse(wo, ls.wi, front, deltaLight);
         if (brdfCos.isBlack() || ls.irradiance.isBlack()) return Color(0);
         return ShadowRays::transmittance(scene_, hit, ls, rayCount) * ls.irradiance * brdfCos;
     };
     Color L;
     for (const auto& light : scene_.lights()) {
         if (light->isDelta()) {
-            L += shade(light->sample(hit.p, Vec2(0.5f, 0.5f)));
+            L += shade(light->sample(hit.p, Vec2(0.5f, 0.5f)), true);
             continue;
         }
         // An area light: the average over its shadow samples, stratified over the light, the
@@ -107,7 +116,8 @@ Color WhittedIntegrator::directLighting(const Hit& hit, const Bsdf& bsdf, const 
         Color sum;
         for (int k = 0; k < count; ++k)
             sum +=
-                shade(light->sample(hit.p, shifted(stratifiedPoint(k, count, jitterSeed), offset)));
+                shade(light->sample(hit.p, shifted(stratifiedPoint(k, count, jitterSeed), offset)),
+                      false);
         L += sum / static_cast<float>(count);
     }
     return L;

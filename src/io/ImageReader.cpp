@@ -248,7 +248,7 @@ bool isFloat(FREE_IMAGE_TYPE type) {
 
 }  // namespace
 
-Image ImageReader::read(const std::filesystem::path& path) {
+Image ImageReader::read(const std::filesystem::path& path, Content content) {
     const std::string name = path.string();
     std::error_code ignored;
     if (std::filesystem::is_directory(path, ignored))
@@ -323,15 +323,18 @@ Image ImageReader::read(const std::filesystem::path& path) {
             FreeImage_GetScanLine(bitmap.get(), scanlineOfRow(format, y, height));
         for (int x = 0; x < width; ++x) {
             const Color c = floatTexel(type, scanline, x);
-            image.at(x, y) =
-                linear ? c : Color(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
+            image.at(x, y) = linear || content == Content::Data
+                                 ? c
+                                 : Color(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
         }
     }
     return image;
 }
 
-std::shared_ptr<const ImageTexture> ImageReader::readTexture(const std::filesystem::path& path) {
-    return std::make_shared<const ImageTexture>(std::make_shared<const MipMap>(read(path)));
+std::shared_ptr<const ImageTexture> ImageReader::readTexture(const std::filesystem::path& path,
+                                                             Content content) {
+    return std::make_shared<const ImageTexture>(
+        std::make_shared<const MipMap>(read(path, content)));
 }
 
 }  // namespace lancer

@@ -11,11 +11,18 @@ namespace lancer {
 // Loads image files through FreeImage as linear RGB: PNG, JPEG (baseline and progressive), TGA,
 // BMP, TIFF, EXR, HDR, PFM and the other formats FreeImage reads. The format is recognised from
 // the file's contents, or from its extension when the contents have no signature (TGA).
-// Integer images (8 or 16 bits per channel, palettized, greyscale) hold sRGB-encoded colour and
-// are decoded to linear; float images (EXR, HDR, PFM, float TIFF) are linear already and kept.
+// Integer images (8 or 16 bits per channel, palettized, greyscale) of colour hold sRGB-encoded
+// colour and are decoded to linear; those of data (normal and bump maps) are taken as they are,
+// scaled to [0, 1]. Float images (EXR, HDR, PFM, float TIFF) are linear already and kept.
 // Alpha is ignored.
 class ImageReader {
 public:
+    // What an integer image's values are.
+    enum class Content {
+        Color,  // sRGB-encoded colour (textures of colours)
+        Data,   // linear numbers (normal maps, height maps): never sRGB-decoded
+    };
+
     // The largest image read: beyond it a damaged or hostile header would have FreeImage allocate
     // gigabytes. The size a file declares is checked before its pixels are decoded (for the few
     // formats FreeImage cannot read the header of alone, GIF, JPEG 2000, DDS, SGI and some rarer
@@ -26,9 +33,10 @@ public:
     // Throws InputError naming the file when it is missing, unreadable, corrupt, larger than the
     // limits above or holds pixels that are not colour (complex or 32-bit integer data, for
     // example).
-    static Image read(const std::filesystem::path& path);
+    static Image read(const std::filesystem::path& path, Content content = Content::Color);
     // The image of the file as a texture: read, then its mip-map pyramid built.
-    static std::shared_ptr<const ImageTexture> readTexture(const std::filesystem::path& path);
+    static std::shared_ptr<const ImageTexture> readTexture(const std::filesystem::path& path,
+                                                           Content content = Content::Color);
 };
 
 }  // namespace lancer

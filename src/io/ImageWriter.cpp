@@ -116,6 +116,11 @@ bool ImageWriter::supports(const std::filesystem::path& path) {
     return findFormat(path) != nullptr;
 }
 
+bool ImageWriter::storesLinear(const std::filesystem::path& path) {
+    const Format* format = findFormat(path);
+    return format && format->linear;
+}
+
 std::string ImageWriter::supportedExtensions() {
     std::string list;
     for (const Format& f : kFormats)
@@ -124,8 +129,7 @@ std::string ImageWriter::supportedExtensions() {
 }
 
 std::uint64_t ImageWriter::memoryNeeded(const std::filesystem::path& path, int width, int height) {
-    const Format* format = findFormat(path);
-    const std::uint64_t bytesPerPixel = format && format->linear ? sizeof(FIRGBF) : 3;
+    const std::uint64_t bytesPerPixel = storesLinear(path) ? sizeof(FIRGBF) : 3;
     return 2 * bytesPerPixel * static_cast<std::uint64_t>(width) *
            static_cast<std::uint64_t>(height);
 }

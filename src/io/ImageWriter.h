@@ -17,6 +17,9 @@ class ImageWriter {
 public:
     // Whether the path's extension (case-insensitive) is one of the formats above.
     static bool supports(const std::filesystem::path& path);
+    // Whether the path's format stores linear float radiance (.exr .hdr .pfm) rather than 8-bit
+    // sRGB.
+    static bool storesLinear(const std::filesystem::path& path);
     // The supported extensions, for messages: ".png, .jpg, ...".
     static std::string supportedExtensions();
 

@@ -11,7 +11,9 @@
 //           d < 1 gets transmission 1 - d with ior 1: see-through without bending light, as
 //           dissolve is. Glass models are clear whatever d says.
 //   Ke      emission; an emissive triangle is an ordinary triangle with an emissive material
-//   Tf and the other maps (map_Ka, map_Ks, bump...) are not used.
+//   norm    normal map (tangent space, read as data); it wins over a bump map, with a warning
+//   bump / map_Bump  bump map (read as data), its -bm multiplier the bump_scale (absent: 1)
+//   Tf and the other maps (map_Ka, map_Ks, map_d...) are not used.
 //
 // illum (absent: 2)                              specular  reflection  transmission
 //   0  colour on, ambient off                    0         0           1 - d
@@ -43,7 +45,9 @@
 
 #include "io/ObjSupport.h"
 #include "materials/BlinnPhongMaterial.h"
+#include "materials/BumpMap.h"
 #include "materials/ConstantTexture.h"
+#include "materials/NormalMap.h"
 #include "math/Float.h"
 #include "scene/InputError.h"
 
@@ -137,7 +141,9 @@ std::shared_ptr<const Material> MtlMaterialConverter::convert(const tinyobj::mat
     material.emission = colorOf(mtl.emission);
     if (model.lit) {
         std::shared_ptr<const Texture> texture;
-        if (!mtl.diffuse_texname.empty()) texture = diffuseTexture(mtl, mtlPath);
+        if (!mtl.diffuse_texname.empty())
+            texture = readTexture(mtl, mtlPath, "map_Kd", mtl.diffuse_texname,
+                                  ImageReader::Content::Color, "the Kd colour is used instead");
         material.diffuse = texture ? texture : std::make_shared<ConstantTexture>(kd);
         material.ambient = ka.isBlack() ? material.diffuse : std::make_shared<ConstantTexture>(ka);
     } else {
@@ -160,20 +166,43 @@ std::shared_ptr<const Material> MtlMaterialConverter::convert(const tinyobj::mat
         material.transmission = Color(1 - opacity);
         material.ior = 1;
     }
-    return std::make_shared<BlinnPhongMaterial>(std::move(material));
+    auto converted = std::make_shared<BlinnPhongMaterial>(std::move(material));
+    converted->setShadingNormalMap(shadingNormalMap(mtl, mtlPath));
+    return converted;
 }
 
-std::shared_ptr<const Texture> MtlMaterialConverter::diffuseTexture(const tinyobj::material_t& mtl,
-                                                                    const fs::path& mtlPath) {
-    const fs::path path = findTexture(mtlPath.parent_path(), mtl.diffuse_texname);
-    const auto [cached, isNew] = textures_.try_emplace(path);
+std::shared_ptr<const ShadingNormalMap> MtlMaterialConverter::shadingNormalMap(
+    const tinyobj::material_t& mtl, const fs::path& mtlPath) {
+    constexpr const char* kUnmapped = "the surface is shaded without it";
+    if (!mtl.normal_texname.empty()) {
+        if (!mtl.bump_texname.empty())
+            warn(warnings_, mtlPath,
+                 "material " + inQuotes(mtl.name) +
+                     " has both a normal map (norm) and a bump map; the normal map is used");
+        const auto texels = readTexture(mtl, mtlPath, "norm", mtl.normal_texname,
+                                        ImageReader::Content::Data, kUnmapped);
+        return texels ? std::make_shared<NormalMap>(texels) : nullptr;
+    }
+    if (mtl.bump_texname.empty()) return nullptr;
+    const auto heights =
+        readTexture(mtl, mtlPath, "bump", mtl.bump_texname, ImageReader::Content::Data, kUnmapped);
+    const float scale = mtl.bump_texopt.bump_multiplier;
+    return heights && std::isfinite(scale) ? std::make_shared<BumpMap>(heights, scale) : nullptr;
+}
+
+std::shared_ptr<const Texture> MtlMaterialConverter::readTexture(
+    const tinyobj::material_t& mtl, const fs::path& mtlPath, const std::string& key,
+    const std::string& name, ImageReader::Content content, const std::string& instead) {
+    const fs::path path = findTexture(mtlPath.parent_path(), name);
+    const auto [cached, isNew] = textures_.try_emplace({path, content});
     if (!isNew) return cached->second;
     try {
-        cached->second = loadTexture_(path);
+        cached->second = loadTexture_(path, content);
     } catch (const InputError& error) {
         warn(warnings_, mtlPath,
-             "texture " + inQuotes(path.string()) + " (map_Kd of material " + inQuotes(mtl.name) +
-                 ") cannot be loaded; the Kd colour is used instead (" + error.message() + ")");
+             "texture " + inQuotes(path.string()) + " (" + key + " of material " +
+                 inQuotes(mtl.name) + ") cannot be loaded; " + instead + " (" + error.message() +
+                 ")");
     }
     return cached->second;
 }

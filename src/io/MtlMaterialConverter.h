@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/ObjLoader.h"
@@ -16,6 +17,7 @@ struct material_t;
 namespace lancer {
 
 class Material;
+class ShadingNormalMap;
 class Texture;
 
 // Turns MTL materials, as tinyobjloader reads them, into ours, loading each texture once. The
@@ -36,9 +38,16 @@ public:
                                             const std::filesystem::path& mtlPath);
 
 private:
-    // Null when the texture cannot be loaded (with one warning per texture file).
-    std::shared_ptr<const Texture> diffuseTexture(const tinyobj::material_t& mtl,
-                                                  const std::filesystem::path& mtlPath);
+    // The texture that key `key` of `mtl` names (file `name`), of colour or of data; null when it
+    // cannot be loaded, with one warning per texture file saying what is used instead.
+    std::shared_ptr<const Texture> readTexture(const tinyobj::material_t& mtl,
+                                               const std::filesystem::path& mtlPath,
+                                               const std::string& key, const std::string& name,
+                                               ImageReader::Content content,
+                                               const std::string& instead);
+    // The normal map (norm) or else the bump map (bump, map_Bump, with -bm) of `mtl`, or null.
+    std::shared_ptr<const ShadingNormalMap> shadingNormalMap(const tinyobj::material_t& mtl,
+                                                             const std::filesystem::path& mtlPath);
     // Exporters often write absolute paths of the author's machine: when the path leads nowhere,
     // the file of that name next to the MTL is taken instead.
     static std::filesystem::path findTexture(const std::filesystem::path& mtlFolder,
@@ -46,7 +55,8 @@ private:
 
     const ObjLoader::TextureLoader& loadTexture_;
     std::vector<std::string>& warnings_;
-    std::map<std::filesystem::path, std::shared_ptr<const Texture>> textures_;
+    std::map<std::pair<std::filesystem::path, ImageReader::Content>, std::shared_ptr<const Texture>>
+        textures_;
 };
 
 }  // namespace lancer

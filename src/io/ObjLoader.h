@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/TriangleMesh.h"
+#include "io/ImageReader.h"
 
 namespace lancer {
 
@@ -15,9 +16,10 @@ class Texture;
 // Reads a Wavefront OBJ model and the MTL materials it names into one triangle mesh.
 class ObjLoader {
 public:
-    // Loads the image at a path; throws InputError when it cannot (the caller caches textures).
-    using TextureLoader =
-        std::function<std::shared_ptr<const Texture>(const std::filesystem::path&)>;
+    // Loads the image at a path, of colour or of data (normal and bump maps); throws InputError
+    // when it cannot (the caller caches textures).
+    using TextureLoader = std::function<std::shared_ptr<const Texture>(const std::filesystem::path&,
+                                                                       ImageReader::Content)>;
 
     // Throws InputError naming the file when the OBJ itself is missing, unreadable, or unusable
     // (nothing in it can be rendered). Problems that still leave a mesh (a missing .mtl or

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <optional>
 #include <sstream>
@@ -20,21 +21,26 @@
 #include "geometry/Torus.h"
 #include "geometry/Triangle.h"
 #include "integrators/IntegratorRegistry.h"
+#include "io/GltfLoader.h"
 #include "io/ImageReader.h"
 #include "io/InputFile.h"
 #include "io/JsonDocument.h"
 #include "io/ObjLoader.h"
 #include "lights/AreaLight.h"
 #include "lights/DirectionalLight.h"
+#include "lights/EnvironmentLight.h"
 #include "lights/PointLight.h"
 #include "lights/SpotLight.h"
 #include "materials/BlinnPhongMaterial.h"
+#include "materials/BumpMap.h"
 #include "materials/CheckerTexture.h"
 #include "materials/ConstantTexture.h"
 #include "materials/ImageTexture.h"
 #include "materials/MaterialParameters.h"
+#include "materials/NormalMap.h"
 #include "math/Transform.h"
 #include "render/Filter.h"
+#include "render/ToneMapper.h"
 #include "util/DidYouMean.h"
 #include "util/Parameters.h"
 #include "util/Registry.h"
@@ -63,6 +69,10 @@ std::vector<std::string> withKeys(std::vector<std::string> common,
     common.insert(common.end(), own.begin(), own.end());
     return common;
 }
+
+// How many shadow rays the Whitted integrator traces towards an area light or the environment per
+// shading point, unless the light's "samples" says.
+constexpr int kDefaultShadowSamples = 16;
 
 }  // namespace
 
@@ -95,6 +105,8 @@ private:
     void loadCamera(const Node& node);
     void loadMaterials(const Node& node);
     std::unique_ptr<Material> loadMaterial(const Node& node);
+    // The normal or bump map of a material's object (normal_map, bump_map, bump_scale), or null.
+    std::shared_ptr<const ShadingNormalMap> loadShadingNormalMap(const Node& material);
     std::shared_ptr<const Texture> loadTexture(const Node& node);
     // A type of the "objects" or "lights" array, and the member reading its keys.
     struct ObjectType {
@@ -139,13 +151,27 @@ private:
                                         const std::optional<Transform>& transform);
     std::unique_ptr<Shape> loadMeshObject(const Node& node, const char* what,
                                           const std::optional<Transform>& transform);
+    std::unique_ptr<Shape> loadGltfObject(const Node& node, const char* what,
+                                          const std::optional<Transform>& transform);
+    // An instance of the model that the object's "file" names, read by `read` ("model" names it
+    // in messages), with the object's material if it has one, else the model's own.
+    using ModelReader = std::function<std::shared_ptr<TriangleMesh>(const std::filesystem::path&)>;
+    std::unique_ptr<Shape> loadModelObject(const Node& node, const char* what,
+                                           const std::optional<Transform>& transform,
+                                           const std::string& model, const ModelReader& read);
     std::unique_ptr<Shape> loadCsg(const Node& node, const char* what,
                                    const std::optional<Transform>& transform);
     static std::unique_ptr<Shape> placed(std::unique_ptr<Shape> shape,
                                          const std::optional<Transform>& transform);
-    std::shared_ptr<const Mesh> loadMesh(const Node& file);
+    std::shared_ptr<const Mesh> loadMesh(const Node& file, const std::string& model,
+                                         const ModelReader& read);
     // Image files are read once, however many materials (and models) use them.
-    std::shared_ptr<const Texture> loadImageTexture(const std::filesystem::path& path);
+    std::shared_ptr<const Texture> loadImageTexture(
+        const std::filesystem::path& path,
+        ImageReader::Content content = ImageReader::Content::Color);
+    // The image file that the string at `file` names; `what` names it in messages ("texture").
+    std::shared_ptr<const Texture> loadImageFile(const Node& file, const std::string& what,
+                                                 ImageReader::Content content);
     std::shared_ptr<const Texture> loadImageTextureFile(const Node& file);
     std::shared_ptr<const Texture> loadCheckerTexture(const Node& checker);
     Transform readTransform(const Node& node) const;
@@ -153,6 +179,10 @@ private:
     // A light that reads its own keys: LightType::keys() and LightType::create(parameters).
     template <typename LightType>
     void loadLight(const Node& node, const char* what);
+    // The top-level "environment" (the root is where a "background" beside it is reported).
+    void loadEnvironment(const Node& root);
+    // A light's "samples": the Whitted integrator's shadow rays towards it per shading point.
+    int readShadowSamples(const Node& node) const;
     void loadQuadLight(const Node& node, const char* what);
     void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
@@ -234,13 +264,20 @@ public:
     std::shared_ptr<const Texture> texture(const std::string& key) const override {
         return loader_.loadTexture(loader_.require(node_, key, what_));
     }
+    std::unique_ptr<Parameters> object(const std::string& key,
+                                       const std::vector<std::string>& keys) const override {
+        const Node value = loader_.require(node_, key, what_);
+        loader_.requireObject(value, value.name);
+        loader_.checkKeys(value, value.name, keys);
+        return std::make_unique<ObjectParameters>(loader_, value, value.name.c_str());
+    }
     [[noreturn]] void fail(const std::string& key, const std::string& message) const override {
         loader_.fail(node_.has(key) ? node_[key] : node_, message);
     }
 
 private:
     Reader& loader_;
-    const Node& node_;
+    const Node node_;
     std::string what_;
 };
 
@@ -251,6 +288,7 @@ const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectType
         {"plane", "a plane", &Reader::loadShape<Plane>},
         {"triangle", "a triangle", &Reader::loadTriangle},
         {"mesh", "a mesh", &Reader::loadMeshObject},
+        {"gltf", "a glTF model", &Reader::loadGltfObject},
         {"disk", "a disk", &Reader::loadShape<Disk>},
         {"box", "a box", &Reader::loadShape<Box>},
         {"cylinder", "a cylinder", &Reader::loadShape<Cylinder>},
@@ -302,6 +340,7 @@ std::vector<SceneLoader::Vocabulary> SceneLoader::vocabulary() {
             {"materials", Reader::materialTypes().names()},
             {"textures", Reader::textureTypes().names()},
             {"filters", Filter::types().names()},
+            {"tone operators", ToneMapper::operators().names()},
             {"integrators", IntegratorRegistry::table().names()}};
 }
 
@@ -339,8 +378,8 @@ Scene SceneLoader::Reader::load() {
     const Node root{doc_.root(), "", "the scene"};
     requireObject(root, "the scene");
     checkKeys(root, "the scene",
-              {"render", "camera", "background", "ambient", "materials", "objects", "lights",
-               "radiosity"});
+              {"render", "camera", "background", "environment", "ambient", "materials", "objects",
+               "lights", "radiosity"});
 
     defaultMaterial_ = scene_.addMaterial(std::make_unique<BlinnPhongMaterial>());
     if (root.has("render")) loadRender(root["render"]);
@@ -348,6 +387,7 @@ Scene SceneLoader::Reader::load() {
     if (!root.has("camera")) fail(root, "the scene has no \"camera\"");
     loadCamera(root["camera"]);
     if (root.has("background")) scene_.setBackground(readColor(root["background"]));
+    if (root.has("environment")) loadEnvironment(root);
     if (root.has("ambient")) scene_.setAmbient(readColor(root["ambient"]));
     if (root.has("materials")) loadMaterials(root["materials"]);
     if (root.has("objects")) {
@@ -371,7 +411,8 @@ Scene SceneLoader::Reader::load() {
 void SceneLoader::Reader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
     checkKeys(node, "\"render\"",
-              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive"});
+              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive",
+               "exposure", "tonemap"});
     RenderSettings& settings = scene_.settings();
     if (node.has("width"))
         settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
@@ -387,6 +428,16 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     }
     if (node.has("filter")) loadFilter(node["filter"]);
     if (node.has("adaptive")) loadAdaptive(node, node["adaptive"]);
+    if (node.has("exposure")) {
+        const Node exposure = node["exposure"];
+        settings.exposure = readNumber(exposure);
+        constexpr int limit = RenderSettings::kMaxExposure;
+        if (std::abs(settings.exposure) > static_cast<float>(limit))
+            fail(exposure, "\"exposure\" must be between -" + std::to_string(limit) + " and " +
+                               std::to_string(limit) + " stops");
+    }
+    if (node.has("tonemap"))
+        settings.tonemap = lookUp(ToneMapper::operators(), node["tonemap"], "tonemap").name;
 }
 
 void SceneLoader::Reader::loadFilter(const Node& node) {
@@ -498,8 +549,27 @@ std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
     const MaterialType& entry = node.has("type")
                                     ? lookUp(materialTypes(), node["type"], "material type")
                                     : *materialTypes().find("blinn_phong");
-    checkKeys(node, "a material", withKeys({"type"}, entry.keys()));
-    return entry.create(ObjectParameters(*this, node, "a material"));
+    checkKeys(node, "a material",
+              withKeys({"type", "normal_map", "bump_map", "bump_scale"}, entry.keys()));
+    std::unique_ptr<Material> material = entry.create(ObjectParameters(*this, node, "a material"));
+    material->setShadingNormalMap(loadShadingNormalMap(node));
+    return material;
+}
+
+std::shared_ptr<const ShadingNormalMap> SceneLoader::Reader::loadShadingNormalMap(
+    const Node& material) {
+    if (material.has("normal_map") && material.has("bump_map"))
+        failAtKey(material["bump_map"],
+                  "\"normal_map\" and \"bump_map\" both give the shading normal; give one of them");
+    if (material.has("bump_scale") && !material.has("bump_map"))
+        failAtKey(material["bump_scale"], "\"bump_scale\" scales a \"bump_map\", which is missing");
+    if (material.has("normal_map"))
+        return std::make_shared<NormalMap>(
+            loadImageFile(material["normal_map"], "normal map", ImageReader::Content::Data));
+    if (!material.has("bump_map")) return nullptr;
+    const float scale = material.has("bump_scale") ? readNumber(material["bump_scale"]) : 1;
+    return std::make_shared<BumpMap>(
+        loadImageFile(material["bump_map"], "bump map", ImageReader::Content::Data), scale);
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node) {
@@ -512,11 +582,17 @@ std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTextureFile(const Node& file) {
+    return loadImageFile(file, "texture", ImageReader::Content::Color);
+}
+
+std::shared_ptr<const Texture> SceneLoader::Reader::loadImageFile(const Node& file,
+                                                                  const std::string& what,
+                                                                  ImageReader::Content content) {
     const std::filesystem::path path = baseDir_ / readString(file);
     try {
-        return loadImageTexture(path);
+        return loadImageTexture(path, content);
     } catch (const InputError& e) {
-        fail(file, "texture " + inQuotes(path.string()) + ": " + e.message());
+        fail(file, what + " " + inQuotes(path.string()) + ": " + e.message());
     }
 }
 
@@ -598,10 +674,31 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadTriangle(
 
 std::unique_ptr<Shape> SceneLoader::Reader::loadMeshObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
+    const auto readObj = [this](const std::filesystem::path& path) {
+        const auto loadTexture = [this](const std::filesystem::path& p,
+                                        ImageReader::Content content) {
+            return loadImageTexture(p, content);
+        };
+        return ObjLoader::load(path, loadTexture, warnings_);
+    };
+    return loadModelObject(node, what, transform, "mesh", readObj);
+}
+
+std::unique_ptr<Shape> SceneLoader::Reader::loadGltfObject(
+    const Node& node, const char* what, const std::optional<Transform>& transform) {
+    const auto readGltf = [this](const std::filesystem::path& path) {
+        return GltfLoader::load(path, warnings_);
+    };
+    return loadModelObject(node, what, transform, "glTF model", readGltf);
+}
+
+std::unique_ptr<Shape> SceneLoader::Reader::loadModelObject(
+    const Node& node, const char* what, const std::optional<Transform>& transform,
+    const std::string& model, const ModelReader& read) {
     checkKeys(node, what, {"type", "file", "material", "transform"});
-    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what));
+    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what), model, read);
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
-    // Without "material", the model's own materials (from its .mtl) are used.
+    // Without "material", the model's own materials (an OBJ's .mtl, a glTF's) are used.
     const Material* material = node.has("material") ? materialOf(node) : nullptr;
     return std::make_unique<Instance>(std::move(mesh), transform.value_or(Transform()), material);
 }
@@ -641,30 +738,31 @@ std::unique_ptr<Shape> SceneLoader::Reader::placed(std::unique_ptr<Shape> shape,
     return std::make_unique<Instance>(std::move(shape), *transform);
 }
 
-std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file) {
+std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
+                                                          const std::string& model,
+                                                          const ModelReader& read) {
     const std::filesystem::path path = baseDir_ / readString(file);
-    const std::string key = std::filesystem::weakly_canonical(path).string();
+    const std::string key = model + " " + std::filesystem::weakly_canonical(path).string();
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
-        const auto loadTexture = [this](const std::filesystem::path& p) {
-            return loadImageTexture(p);
-        };
-        std::shared_ptr<TriangleMesh> triangles = ObjLoader::load(path, loadTexture, warnings_);
+        std::shared_ptr<TriangleMesh> triangles = read(path);
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
         meshes_[key] = mesh;
         scene_.statistics().uniqueTriangles += mesh->triangles().triangleCount();
         scene_.statistics().meshBytes += mesh->memoryBytes();
         return mesh;
     } catch (const InputError& e) {
-        fail(file, "mesh " + inQuotes(path.string()) + ": " + e.message());
+        fail(file, model + " " + inQuotes(path.string()) + ": " + e.message());
     }
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTexture(
-    const std::filesystem::path& path) {
-    const std::string key = std::filesystem::weakly_canonical(path).string();
+    const std::filesystem::path& path, ImageReader::Content content) {
+    // One file may be both a colour texture and a map, read differently.
+    const std::string key = std::filesystem::weakly_canonical(path).string() +
+                            (content == ImageReader::Content::Data ? " (data)" : "");
     if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
-    std::shared_ptr<const Texture> texture = ImageReader::readTexture(path);
+    std::shared_ptr<const Texture> texture = ImageReader::readTexture(path, content);
     textures_[key] = texture;
     return texture;
 }
@@ -735,6 +833,33 @@ void SceneLoader::Reader::loadLight(const Node& node) {
     (this->*entry.load)(node, entry.what);
 }
 
+void SceneLoader::Reader::loadEnvironment(const Node& root) {
+    const Node node = root["environment"];
+    if (root.has("background"))
+        failAtKey(node,
+                  "\"environment\" replaces \"background\" (rays that leave the scene see "
+                  "the environment): give one of them");
+    const char* what = "\"environment\"";
+    requireObject(node, what);
+    checkKeys(node, what, EnvironmentLight::keys());
+    const Node file = require(node, "file", what);
+    const std::filesystem::path path = baseDir_ / readString(file);
+    std::optional<Image> map;
+    try {
+        map = ImageReader::read(path);
+    } catch (const InputError& e) {
+        fail(file, "environment map " + inQuotes(path.string()) + ": " + e.message());
+    }
+    auto environment =
+        EnvironmentLight::create(ObjectParameters(*this, node, what), *std::move(map));
+    environment->setShadowSamples(readShadowSamples(node));
+    scene_.setEnvironment(std::move(environment));
+}
+
+int SceneLoader::Reader::readShadowSamples(const Node& node) const {
+    return node.has("samples") ? readInt(node["samples"], 1) : kDefaultShadowSamples;
+}
+
 void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
     checkKeys(node, what, {"type", "corner", "edge1", "edge2", "radiance", "samples"});
     const Vec3 corner = readVec3(require(node, "corner", what));
@@ -771,10 +896,7 @@ const Material* SceneLoader::Reader::emitterOf(const Color& radiance) {
 
 void SceneLoader::Reader::addAreaLight(const Node& node, std::unique_ptr<Shape> surface,
                                        std::unique_ptr<Light> light) {
-    // How many shadow rays the Whitted integrator traces towards it per shading point.
-    constexpr int kDefaultShadowSamples = 16;
-    light->setShadowSamples(node.has("samples") ? readInt(node["samples"], 1)
-                                                : kDefaultShadowSamples);
+    light->setShadowSamples(readShadowSamples(node));
     surface->setAreaLight(light.get());
     scene_.addShape(std::move(surface));
     scene_.addLight(std::move(light));

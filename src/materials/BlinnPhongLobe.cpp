@@ -34,7 +34,7 @@ Color BlinnPhongLobe::localResponse(float, float cosThetaH) const {
     return weight() * std::pow(std::max(0.0f, cosThetaH), exponent_);
 }
 
-std::optional<BsdfSample> BlinnPhongLobe::sample(const Vec3& wo, const Vec2& u) const {
+std::optional<BsdfSample> BlinnPhongLobe::sample(const Vec3& wo, float, const Vec2& u) const {
     if (wo.z == 0) return std::nullopt;
     // h with density D(h): cos(theta_h) = u^(1 / (n + 1)) inverts the cumulative distribution
     // of cos(theta_h), whose density is (n + 1) cos^n.

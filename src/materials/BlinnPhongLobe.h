@@ -22,7 +22,7 @@ public:
 
     Color f(const Vec3& wo, const Vec3& wi) const override;
     float pdf(const Vec3& wo, const Vec3& wi) const override;
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
+    std::optional<BsdfSample> sample(const Vec3& wo, float uChoice, const Vec2& u) const override;
     // The classic highlight ks max(0, n.h)^n, not normalized.
     Color localResponse(float cosThetaL, float cosThetaH) const override;
 

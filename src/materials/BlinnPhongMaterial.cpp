@@ -1,20 +1,66 @@
 #include "materials/BlinnPhongMaterial.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "materials/BlinnPhongLobe.h"
 #include "materials/Bsdf.h"
+#include "materials/ConductorLobe.h"
 #include "materials/DielectricLobe.h"
 #include "materials/LambertianLobe.h"
 #include "materials/MirrorLobe.h"
+#include "materials/RoughConductorLobe.h"
+#include "materials/RoughDielectricLobe.h"
 
 namespace lancer {
 
 BlinnPhongMaterial::BlinnPhongMaterial(Parameters parameters)
     : parameters_(std::move(parameters)) {}
 
+// The RGB complex indices of refraction that Mitsuba 3.9.1 (scalar_rgb) makes from its measured
+// spectra (resources/data/ior, after Palik's handbook), integrated against the CIE 1931 matching
+// functions into linear sRGB; tests/cli/data/rough/metal_table.py prints them.
+const std::vector<BlinnPhongMaterial::Metal>& BlinnPhongMaterial::metals() {
+    static const std::vector<Metal> table{
+        {"gold", {{0.1430f, 0.3753f, 1.4420f}, {3.9830f, 2.3856f, 1.6034f}}},
+        {"silver", {{0.1553f, 0.1167f, 0.1384f}, {4.8284f, 3.1222f, 2.1469f}}},
+        {"copper", {{0.2010f, 0.9237f, 1.1022f}, {3.9133f, 2.4530f, 2.1421f}}},
+        {"aluminium", {{1.6575f, 0.8804f, 0.5212f}, {9.2238f, 6.2695f, 4.8370f}}},
+        {"chromium", {{4.3697f, 2.9165f, 1.6549f}, {5.2065f, 4.2313f, 3.7547f}}},
+    };
+    return table;
+}
+
+namespace {
+
+// The conductor's index of `metal` or `conductor`, if the material has one.
+std::optional<ConductorIor> readConductor(const MaterialParameters& keys) {
+    if (keys.has("metal") && keys.has("conductor"))
+        keys.fail("conductor", "\"metal\" and \"conductor\" together: give one of them");
+    if (keys.has("metal")) {
+        const auto& metals = BlinnPhongMaterial::metals();
+        std::vector<std::string> names;
+        for (const auto& metal : metals)
+            names.emplace_back(metal.name);
+        return metals[keys.choice("metal", names)].ior;
+    }
+    if (!keys.has("conductor")) return std::nullopt;
+    const std::unique_ptr<Parameters> ior = keys.object("conductor", {"eta", "k"});
+    ConductorIor conductor{ior->color("eta"), ior->color("k")};
+    const float smallestEta = std::min(conductor.eta.r, std::min(conductor.eta.g, conductor.eta.b));
+    if (!(smallestEta > 0)) ior->fail("eta", "\"eta\" must be greater than 0 in every channel");
+    return conductor;
+}
+
+}  // namespace
+
 std::unique_ptr<Material> BlinnPhongMaterial::create(const MaterialParameters& keys) {
     Parameters m;
+    m.conductor = readConductor(keys);
+    if (m.conductor) {
+        m.diffuse = std::make_shared<ConstantTexture>(Color(0));
+        m.reflection = Color(1);
+    }
     if (keys.has("diffuse")) m.diffuse = keys.texture("diffuse");
     m.ambient = keys.has("ambient") ? keys.texture("ambient") : m.diffuse;
     if (keys.has("specular")) m.specular = keys.color("specular");
@@ -23,6 +69,10 @@ std::unique_ptr<Material> BlinnPhongMaterial::create(const MaterialParameters& k
     if (keys.has("transmission")) m.transmission = keys.color("transmission");
     if (keys.has("ior")) m.ior = keys.numberAbove("ior", 0, false);
     if (keys.has("emission")) m.emission = keys.color("emission");
+    if (keys.has("roughness")) {
+        m.roughness = keys.numberAbove("roughness", 0, true);
+        if (m.roughness > 1) keys.fail("roughness", "\"roughness\" must be at most 1");
+    }
     return std::make_unique<BlinnPhongMaterial>(std::move(m));
 }
 
@@ -30,7 +80,16 @@ void BlinnPhongMaterial::addLobes(const Hit& hit, Bsdf& bsdf) const {
     // In the order of the scene format's equation: Whitted's sums keep its rounding.
     bsdf.add<LambertianLobe>(diffuseReflectance(hit));
     bsdf.add<BlinnPhongLobe>(parameters_.specular, parameters_.shininess);
-    bsdf.add<MirrorLobe>(parameters_.reflection);
+    const float alpha = parameters_.roughness;
+    if (alpha > 0) {
+        bsdf.add<RoughConductorLobe>(parameters_.reflection, alpha, parameters_.conductor);
+        bsdf.add<RoughDielectricLobe>(parameters_.transmission, parameters_.ior, alpha);
+        return;
+    }
+    if (parameters_.conductor)
+        bsdf.add<ConductorLobe>(parameters_.reflection, *parameters_.conductor);
+    else
+        bsdf.add<MirrorLobe>(parameters_.reflection);
     bsdf.add<DielectricLobe>(parameters_.transmission, parameters_.ior);
 }
 

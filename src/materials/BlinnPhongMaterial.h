@@ -1,18 +1,22 @@
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "materials/ConstantTexture.h"
 #include "materials/Material.h"
 #include "materials/MaterialParameters.h"
+#include "materials/Optics.h"
 
 namespace lancer {
 
 // The scene format's material: Blinn-Phong with mirror reflection and refraction. Its BSDF is a
-// Lambertian lobe kd, a normalized Blinn-Phong lobe ks and shininess, a mirror kr and a smooth
-// dielectric kt / ior, whose local responses and specular rays give Whitted's equation.
+// Lambertian lobe kd, a normalized Blinn-Phong lobe ks and shininess, a mirror kr (a conductor's
+// Fresnel reflectance with `metal` or `conductor`) and a smooth dielectric kt / ior, whose local
+// responses and specular rays give Whitted's equation; with `roughness` > 0 the mirror and the
+// dielectric are GGX microfacet lobes instead.
 class BlinnPhongMaterial final : public Material {
 public:
     // The scene file's keys.
@@ -26,14 +30,23 @@ public:
         Color transmission{0};                               // kt
         float ior = 1.5f;                                    // index of refraction inside
         Color emission{0};                                   // emitted radiance
+        float roughness = 0;                                 // GGX alpha of kr and kt; 0: smooth
+        std::optional<ConductorIor> conductor;               // Fresnel of kr: none is 1
     };
+
+    // A named metal of the scene file's `metal` key.
+    struct Metal {
+        const char* name;
+        ConductorIor ior;
+    };
+    static const std::vector<Metal>& metals();
 
     BlinnPhongMaterial() = default;
     explicit BlinnPhongMaterial(Parameters parameters);
     // The scene file's "blinn_phong" material, every key optional.
     static std::vector<std::string> keys() {
-        return {"diffuse",    "ambient",      "specular", "shininess",
-                "reflection", "transmission", "ior",      "emission"};
+        return {"diffuse", "ambient",  "specular",  "shininess", "reflection", "transmission",
+                "ior",     "emission", "roughness", "metal",     "conductor"};
     }
     static std::unique_ptr<Material> create(const MaterialParameters& parameters);
 

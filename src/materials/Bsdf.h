@@ -43,7 +43,10 @@ public:
         AsGiven,           // the scene format's equation (Whitted, radiosity): not for sample()
     };
 
-    Bsdf(const Material& material, const Hit& hit, Weights weights = Weights::EnergyConserving);
+    // The frame's normal is the material's shading normal at the hit, seen from wo (the
+    // direction towards the viewer), which a normal or bump map perturbs.
+    Bsdf(const Material& material, const Hit& hit, const Vec3& wo,
+         Weights weights = Weights::EnergyConserving);
     // The lobes point into the object's own storage.
     Bsdf(const Bsdf&) = delete;
     Bsdf& operator=(const Bsdf&) = delete;
@@ -72,27 +75,38 @@ public:
 
     // Whitted's local model for light arriving from wi, seen from wo on the given side of the
     // surface: the sum of the lobes' local responses, black for light behind that side's
-    // shading normal.
-    Color localResponse(const Vec3& wo, const Vec3& wi, bool front) const;
+    // shading normal. The rough lobes add f cos(theta_L) for a delta light (point, directional,
+    // spot) only: their traced rays find area lights and emitters.
+    Color localResponse(const Vec3& wo, const Vec3& wi, bool front, bool deltaLight) const;
     // The rays Whitted traces from wo on the given side: the delta lobes' reflections about the
     // shading normal merged into one, then their refractions. Returns how many were written.
     std::size_t specularRays(const Vec3& wo, bool front,
                              std::array<SpecularRay, kMaxSpecularRays>& rays) const;
+    // The rough lobes, each of which Whitted traces with one direction per pixel sample.
+    std::size_t roughLobeCount() const { return roughCount_; }
+    // The rays the rough lobe `index` traces from wo, drawn with u (BsdfLobe::tracedRays), but
+    // those that would cross the geometric surface the wrong way. Returns how many were written.
+    std::size_t tracedRays(std::size_t index, const Vec3& wo, const Vec2& u,
+                           std::array<SpecularRay, 2>& rays) const;
     // The albedo of the ideal diffuse lobes (f = albedo / pi), which radiosity handles.
     const Color& diffuseReflectance() const { return diffuseWeight_; }
     // Whether some lobe is neither diffuse nor delta (highlights).
-    bool hasGlossyLobe() const { return glossyCount_ > 0; }
+    bool hasGlossyLobe() const { return glossyCount_ + roughCount_ > 0; }
     // The sum of f over the lobes neither diffuse nor delta, without the geometric cut: the
-    // highlights that radiosity adds for the lights, judged by the shading normal alone.
-    Color glossyF(const Vec3& wo, const Vec3& wi) const;
+    // highlights that radiosity adds for the lights, judged by the shading normal alone. The
+    // rough lobes count for a delta light only (as in localResponse).
+    Color glossyF(const Vec3& wo, const Vec3& wi, bool deltaLight) const;
 
 private:
-    // A vtable pointer and up to three colours: room to spare over the lobes of today.
-    static constexpr std::size_t kLobeSize = 48;
+    // A vtable pointer, the weight and kind, and the rough conductor's roughness and optional
+    // complex index (two colours and a flag): 56 bytes.
+    static constexpr std::size_t kLobeSize = 64;
     struct alignas(alignof(std::max_align_t)) LobeStorage {
         std::byte bytes[kLobeSize];
     };
 
+    // The sum of the rough lobes' f (no geometric cut), for the highlights of delta lights.
+    Color roughF(const Vec3& wo, const Vec3& wi) const;
     // For EnergyConserving weights: divides them if they sum to more than 1 and sets the lobes'
     // probabilities.
     void weighLobes(Weights weights);
@@ -100,6 +114,12 @@ private:
     // Whether wo and wi lie on the sides of the geometric surface that a reflection needs.
     bool reflectsGeometrically(const Vec3& wo, const Vec3& wi) const {
         return dot(wo, ng_) * dot(wi, ng_) > 0;
+    }
+    // Whether a lobe's pair of local directions reflects (or refracts) as the geometric surface
+    // does with the same pair in world space: a smooth-shading normal must not let light cross
+    // the true surface the wrong way.
+    bool sidesAgree(const Vec3& woLocal, const Vec3& wiLocal, bool reflectsGeometrically) const {
+        return (woLocal.z * wiLocal.z > 0) == reflectsGeometrically;
     }
 
     Frame frame_;
@@ -109,10 +129,10 @@ private:
     std::array<BsdfLobe*, kMaxLobes> lobes_{};
     // The same lobes by kind, for Whitted's and radiosity's sums, which treat each kind its own
     // way: the diffuse lobes' summed weight (their f and local response follow from it), and
-    // the glossy and delta lobes in the order added.
+    // the glossy, rough and delta lobes in the order added.
     Color diffuseWeight_;
-    std::size_t glossyCount_ = 0, deltaCount_ = 0;
-    std::array<const BsdfLobe*, kMaxLobes> glossyLobes_, deltaLobes_;
+    std::size_t glossyCount_ = 0, roughCount_ = 0, deltaCount_ = 0;
+    std::array<const BsdfLobe*, kMaxLobes> glossyLobes_, roughLobes_, deltaLobes_;
     // Of choosing each lobe, for sample() and pdf(): set for EnergyConserving weights only.
     std::array<float, kMaxLobes> probabilities_{};
 };
@@ -130,6 +150,8 @@ void Bsdf::add(const Color& weight, Args&&... args) {
         diffuseWeight_ += lobe->weight();
     else if (lobe->isDelta())
         deltaLobes_[deltaCount_++] = lobe;
+    else if (lobe->isRough())
+        roughLobes_[roughCount_++] = lobe;
     else
         glossyLobes_[glossyCount_++] = lobe;
     lobes_[lobeCount_++] = lobe;

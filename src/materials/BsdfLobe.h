@@ -1,8 +1,11 @@
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <optional>
 
 #include "materials/BsdfSample.h"
+#include "materials/SpecularRay.h"
 #include "materials/SpecularSplit.h"
 #include "math/Vec2.h"
 
@@ -23,13 +26,19 @@ public:
         Glossy,   // any other lobe with a density: highlights
         Delta,    // scatters into single directions (mirror, smooth glass): f() and pdf() are 0
                   // and only sample() finds them
+        Rough,    // a microfacet lobe with a density about the mirror and refracted directions
+                  // (rough metal and glass): Whitted and radiosity trace its tracedRays(), and
+                  // shade only point-like lights with its f() (a traced ray finds the rest)
     };
     bool isDelta() const { return kind_ == Kind::Delta; }
     bool isDiffuse() const { return kind_ == Kind::Diffuse; }
+    bool isRough() const { return kind_ == Kind::Rough; }
     virtual Color f(const Vec3& wo, const Vec3& wi) const = 0;
     virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
-    // A direction for wo from u in [0,1)^2, or none when the lobe has nothing to give.
-    virtual std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const = 0;
+    // A direction for wo from u in [0,1)^2 (and uChoice in [0,1), for a lobe that also chooses
+    // between reflection and refraction), or none when the lobe has nothing to give.
+    virtual std::optional<BsdfSample> sample(const Vec3& wo, float uChoice,
+                                             const Vec2& u) const = 0;
 
     // The classic local model that Whitted shades with, next to the physical f(), for a glossy
     // lobe (the Bsdf gives a diffuse lobe's kd cos(theta_L) itself; Whitted traces a delta
@@ -40,6 +49,14 @@ public:
     // How a delta lobe splits the light from a viewer at cosThetaO (>= 0) from the shading normal
     // on its side, on the front side or not (outside). Nothing for other lobes.
     virtual SpecularSplit specularSplit(float /*cosThetaO*/, bool /*outside*/) const { return {}; }
+    // Whitted's distribution ray tracing of a rough lobe: the directions to trace from wo, drawn
+    // with u (one microfacet normal: its reflection and its refraction), each with the weight
+    // f cos / pdf of its radiance (a refraction without the 1 / eta^2, as Whitted's smooth glass).
+    // Returns how many were written. Nothing for other lobes.
+    virtual std::size_t tracedRays(const Vec3& /*wo*/, const Vec2& /*u*/,
+                                   std::array<SpecularRay, 2>& /*rays*/) const {
+        return 0;
+    }
 
     const Color& weight() const { return weight_; }
     // Multiplies the weight by s, for energy conservation.

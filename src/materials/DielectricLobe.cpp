@@ -12,7 +12,7 @@ SpecularSplit DielectricLobe::specularSplit(float cosThetaO, bool outside) const
     return {weight() * F, weight() * (1 - F), eta};
 }
 
-std::optional<BsdfSample> DielectricLobe::sample(const Vec3& wo, const Vec2& u) const {
+std::optional<BsdfSample> DielectricLobe::sample(const Vec3& wo, float, const Vec2& u) const {
     if (wo.z == 0) return std::nullopt;
     const bool outside = wo.z > 0;
     // eta: index beyond the boundary over index on wo's side.

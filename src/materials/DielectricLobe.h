@@ -16,7 +16,7 @@ public:
     Color f(const Vec3&, const Vec3&) const override { return Color(0); }
     float pdf(const Vec3&, const Vec3&) const override { return 0; }
     // u.x chooses between reflection and refraction.
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
+    std::optional<BsdfSample> sample(const Vec3& wo, float uChoice, const Vec2& u) const override;
     // kt F reflected, kt (1 - F) refracted (nothing under total internal reflection).
     SpecularSplit specularSplit(float cosThetaO, bool outside) const override;
 

@@ -16,7 +16,7 @@ float LambertianLobe::pdf(const Vec3& wo, const Vec3& wi) const {
     return std::abs(wi.z) / kPi;
 }
 
-std::optional<BsdfSample> LambertianLobe::sample(const Vec3& wo, const Vec2& u) const {
+std::optional<BsdfSample> LambertianLobe::sample(const Vec3& wo, float, const Vec2& u) const {
     if (wo.z == 0) return std::nullopt;
     Vec3 wi = sampleCosineHemisphere(u);
     if (wo.z < 0) wi.z = -wi.z;

@@ -1,6 +1,11 @@
 #pragma once
 
+#include <memory>
+#include <utility>
+
+#include "materials/ShadingNormalMap.h"
 #include "math/Color.h"
+#include "math/Vec3.h"
 
 namespace lancer {
 
@@ -30,6 +35,19 @@ public:
     virtual Color transmission() const { return Color(0); }
 
     bool isTransmissive() const { return !transmission().isBlack(); }
+
+    // The map that perturbs the shading normal of every material type (normal or bump map);
+    // null for none.
+    void setShadingNormalMap(std::shared_ptr<const ShadingNormalMap> map) {
+        shadingNormalMap_ = std::move(map);
+    }
+    // The normal of the BSDF's frame at the hit, seen from wo: hit.ns, or the map's normal, which
+    // is bent back to just above the horizon where it would face away from the viewer (a
+    // surface seen from behind its normal would be black).
+    Vec3 shadingNormal(const Hit& hit, const Vec3& wo) const;
+
+private:
+    std::shared_ptr<const ShadingNormalMap> shadingNormalMap_;
 };
 
 }  // namespace lancer

@@ -4,7 +4,7 @@
 
 namespace lancer {
 
-std::optional<BsdfSample> MirrorLobe::sample(const Vec3& wo, const Vec2&) const {
+std::optional<BsdfSample> MirrorLobe::sample(const Vec3& wo, float, const Vec2&) const {
     if (wo.z == 0) return std::nullopt;
     BsdfSample s;
     s.wi = {-wo.x, -wo.y, wo.z};

@@ -12,7 +12,7 @@ public:
 
     Color f(const Vec3&, const Vec3&) const override { return Color(0); }
     float pdf(const Vec3&, const Vec3&) const override { return 0; }
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u) const override;
+    std::optional<BsdfSample> sample(const Vec3& wo, float uChoice, const Vec2& u) const override;
     SpecularSplit specularSplit(float, bool) const override { return {weight(), Color(0)}; }
 };
 

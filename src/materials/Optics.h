@@ -1,8 +1,10 @@
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 
+#include "math/Color.h"
 #include "math/Vec3.h"
 
 namespace lancer {
@@ -37,6 +39,36 @@ inline std::optional<Vec3> refract(const Vec3& wi, const Vec3& n, float eta) {
     if (cos2ThetaT <= 0) return std::nullopt;
     const float cosThetaT = std::sqrt(cos2ThetaT);
     return -wi / eta + (cosThetaI / eta - cosThetaT) * n;
+}
+
+// The complex index of refraction eta + i k of a conductor, per channel, relative to the medium
+// the light arrives from.
+struct ConductorIor {
+    Color eta;
+    Color k;
+};
+
+// Fraction of unpolarised light reflected by a smooth conductor of index eta + i k, at the cosine
+// cosThetaI (>= 0) from the normal: the exact average of the s and p reflectances (as pbrt-v3's
+// FrConductor and Mitsuba's fresnel_conductor), written with a^2 + b^2 = |eta^2 - sin^2| so that
+// nothing is complex. ((eta - 1)^2 + k^2) / ((eta + 1)^2 + k^2) at normal incidence, 1 at grazing.
+inline float fresnelConductor(float cosThetaI, float eta, float k) {
+    const float cos2 = cosThetaI * cosThetaI, sin2 = 1 - cos2;
+    const float t0 = eta * eta - k * k - sin2;
+    const float a2PlusB2 = std::sqrt(t0 * t0 + 4 * eta * eta * k * k);
+    const float a = std::sqrt(std::max(0.0f, (a2PlusB2 + t0) / 2));
+    const float t1 = a2PlusB2 + cos2, t2 = 2 * cosThetaI * a;
+    if (!(t1 + t2 > 0)) return 1;  // grazing on an index-matched conductor: the limit
+    const float perpendicular = (t1 - t2) / (t1 + t2);
+    const float t3 = a2PlusB2 * cos2 + sin2 * sin2, t4 = t2 * sin2;
+    const float parallel = perpendicular * (t3 - t4) / (t3 + t4);
+    return (perpendicular + parallel) / 2;
+}
+
+inline Color fresnelConductor(float cosThetaI, const ConductorIor& ior) {
+    return {fresnelConductor(cosThetaI, ior.eta.r, ior.k.r),
+            fresnelConductor(cosThetaI, ior.eta.g, ior.k.g),
+            fresnelConductor(cosThetaI, ior.eta.b, ior.k.b)};
 }
 
 }  // namespace lancer

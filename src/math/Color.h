@@ -36,6 +36,8 @@ struct Color {
     constexpr bool isBlack() const { return r == 0 && g == 0 && b == 0; }
     constexpr float maxComponent() const { return std::max(r, std::max(g, b)); }
     constexpr float average() const { return (r + g + b) / 3.0f; }
+    // Rec. 709 luminance Y: how bright the colour looks (what environment maps are sampled by).
+    constexpr float luminance() const { return 0.2126f * r + 0.7152f * g + 0.0722f * b; }
     bool isFinite() const { return std::isfinite(r) && std::isfinite(g) && std::isfinite(b); }
 
     constexpr bool operator==(const Color&) const = default;

@@ -16,6 +16,16 @@ double luminance(const Color& c) {
     return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b;
 }
 
+// The rule of a pixel's filtered mean, for its image and its auxiliary outputs alike: the
+// weights sum to about the sample count (the filter integrates to 1, so a weight is 1 on
+// average). With a negative-lobed filter (Mitchell) and very few samples, positive and negative
+// weights can cancel to nearly nothing (two samples, one in a lobe) and blow the pixel up; then
+// the pixel is averaged with the weights' magnitudes instead. Either way it is a weighted
+// average, so a constant image stays constant. For a box every weight is 1.
+bool signedWeightsHold(double signedWeight, long long count) {
+    return signedWeight >= 0.5 * static_cast<double>(count);
+}
+
 // Sums of weighted samples: sum(w L), sum(w y) for the luminance y, and sum(w).
 struct WeightedSums {
     double r = 0, g = 0, b = 0, y = 0, weight = 0;
@@ -76,13 +86,8 @@ public:
     }
 
 private:
-    // The weights sum to about the sample count (the filter integrates to 1, so a weight is 1 on
-    // average). With a negative-lobed filter (Mitchell) and very few samples, positive and
-    // negative weights can cancel to nearly nothing (two samples, one in a lobe) and blow the
-    // pixel up; then the pixel is averaged with the weights' magnitudes instead. Either way it is
-    // a weighted average, so a constant image stays constant. For a box every weight is 1.
     const WeightedSums& sums() const {
-        return signed_.weight >= 0.5 * static_cast<double>(count_) ? signed_ : magnitude_;
+        return signedWeightsHold(signed_.weight, count_) ? signed_ : magnitude_;
     }
 
     static constexpr double kLobeFloor = 0.5;
@@ -92,11 +97,51 @@ private:
     long long count_ = 0;
 };
 
+// The filtered mean of a pixel's AovSamples, by the image's rule (signedWeightsHold).
+class AovMean {
+public:
+    void add(const AovSample& sample, double w) {
+        signed_.add(sample, w);
+        magnitude_.add(sample, std::abs(w));
+        ++count_;
+    }
+
+    AovSample value() const {
+        return (signedWeightsHold(signed_.weight, count_) ? signed_ : magnitude_).mean();
+    }
+
+private:
+    struct Sums {
+        double albedo[3] = {}, normal[3] = {}, depth = 0, weight = 0;
+
+        void add(const AovSample& s, double w) {
+            albedo[0] += w * s.albedo.r;
+            albedo[1] += w * s.albedo.g;
+            albedo[2] += w * s.albedo.b;
+            normal[0] += w * s.normal.x;
+            normal[1] += w * s.normal.y;
+            normal[2] += w * s.normal.z;
+            depth += w * s.depth;
+            weight += w;
+        }
+        AovSample mean() const {
+            const auto f = [&](double sum) { return static_cast<float>(sum / weight); };
+            return {{f(albedo[0]), f(albedo[1]), f(albedo[2])},
+                    {f(normal[0]), f(normal[1]), f(normal[2])},
+                    f(depth)};
+        }
+    };
+
+    Sums signed_, magnitude_;
+    long long count_ = 0;
+};
+
 }  // namespace
 
 PixelEstimator::PixelEstimator(const Scene& scene, const Integrator& integrator)
     : scene_(scene),
       integrator_(integrator),
+      firstHitProbe_(scene),
       filterSampler_(Filter::create(scene.settings().filter)),
       maxSamples_(scene.settings().samplesPerPixel) {
     const std::optional<AdaptiveSettings>& adaptive = scene.settings().adaptive;
@@ -104,7 +149,8 @@ PixelEstimator::PixelEstimator(const Scene& scene, const Integrator& integrator)
     threshold_ = adaptive ? adaptive->threshold : 0.0;
 }
 
-Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters& counters) const {
+Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters& counters,
+                               AovSample* aovs) const {
     const RenderSettings& settings = scene_.settings();
     const Camera& camera = scene_.camera();
     // Each of n samples covers about 1/sqrt(n) of the pixel's width (n: the most samples the pixel
@@ -113,6 +159,7 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
                               std::max(0.125f, 1 / std::sqrt(static_cast<float>(maxSamples_)));
     Sampler sampler(seed, x, y);
     WeightedMean mean;
+    AovMean aovMean;
     int n = 0;
     for (int target = batchSize_;; target = std::min(target + batchSize_, maxSamples_)) {
         for (; n < target; ++n) {
@@ -133,6 +180,7 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
                 L = Color();
             }
             mean.add(L, film.weight);
+            if (aovs) aovMean.add(firstHitProbe_.probe(ray, counters.rays), film.weight);
         }
         if (n >= maxSamples_) break;
         // The error is relative to the pixel's luminance, so that the threshold means the same
@@ -146,6 +194,7 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
     }
     counters.samples += static_cast<std::uint64_t>(n);
     ++counters.pixels;
+    if (aovs) *aovs = aovMean.value();
     return mean.value();
 }
 

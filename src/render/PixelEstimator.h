@@ -3,7 +3,9 @@
 #include <cstdint>
 
 #include "math/Color.h"
+#include "render/AovSample.h"
 #include "render/FilterSampler.h"
+#include "render/FirstHitProbe.h"
 #include "render/RenderCounters.h"
 
 namespace lancer {
@@ -20,7 +22,10 @@ public:
     // Reads the scene's render settings (filter, spp, adaptive) once; the camera at each call.
     PixelEstimator(const Scene& scene, const Integrator& integrator);
 
-    Color estimate(int x, int y, std::uint64_t seed, RenderCounters& counters) const;
+    // With `aovs`, also the auxiliary outputs there: what FirstHitProbe finds along the same
+    // camera rays, averaged with the same filter weights (the image's value is unchanged).
+    Color estimate(int x, int y, std::uint64_t seed, RenderCounters& counters,
+                   AovSample* aovs = nullptr) const;
 
     // Below this luminance the adaptive threshold applies to the error relative to this floor
     // rather than to the pixel's own (tiny) value; see estimate().
@@ -29,6 +34,7 @@ public:
 private:
     const Scene& scene_;
     const Integrator& integrator_;
+    FirstHitProbe firstHitProbe_;
     FilterSampler filterSampler_;
     int maxSamples_;
     int batchSize_;     // the first batch is min_spp; without adaptive sampling, all at once

@@ -5,6 +5,8 @@
 #include <functional>
 #include <optional>
 #include <vector>
+
+#include "render/Aov.h"
 #include "render/FinishedTile.h"
 #include "render/PixelWindow.h"
 
@@ -22,6 +24,9 @@ struct RenderOptions {
     // Render the preview passes only, none of the image's tiles (a live view's quick look at
     // something that will change, such as a radiosity solution while it is solved).
     bool previewOnly = false;
+    // The auxiliary outputs to render besides the image (RenderResult::aovFilms), none by
+    // default.
+    std::vector<const Aov*> aovs;
     // Called under a lock after each tile, preview tiles included, in the order they finish;
     // every tile of a pass is reported before any of the next pass.
     std::function<void(const FinishedTile&)> onTileDone;

@@ -125,22 +125,31 @@ RenderResult Renderer::render(const RenderOptions& options) const {
         }
     }
 
+    for (std::size_t i = 0; i < options.aovs.size(); ++i)
+        result.aovFilms.emplace_back(settings.width, settings.height);
+    const bool withAovs = !options.aovs.empty();
     result.counters +=
         renderTilesInParallel(tiles, arena, [&](const PixelWindow& tile, RenderCounters& counters) {
-            // Pixels go to the film only once their tile is complete, so that an interrupted
+            // Pixels go to the films only once their tile is complete, so that an interrupted
             // render holds whole tiles.
-            std::vector<Color> tilePixels(static_cast<std::size_t>(tile.width() * tile.height()));
+            const std::size_t pixelCount = static_cast<std::size_t>(tile.width() * tile.height());
+            std::vector<Color> tilePixels(pixelCount);
+            std::vector<AovSample> tileAovs(withAovs ? pixelCount : 0);
+            const auto index = [&](int x, int y) {
+                return static_cast<std::size_t>((y - tile.y0) * tile.width() + (x - tile.x0));
+            };
             for (int y = tile.y0; y < tile.y1; ++y) {
                 if (cancelled()) return false;
                 for (int x = tile.x0; x < tile.x1; ++x)
-                    tilePixels[static_cast<std::size_t>((y - tile.y0) * tile.width() +
-                                                        (x - tile.x0))] =
-                        pixelEstimator_.estimate(x, y, options.seed, counters);
+                    tilePixels[index(x, y)] = pixelEstimator_.estimate(
+                        x, y, options.seed, counters, withAovs ? &tileAovs[index(x, y)] : nullptr);
             }
             for (int y = tile.y0; y < tile.y1; ++y)
-                for (int x = tile.x0; x < tile.x1; ++x)
-                    result.film.at(x, y) = tilePixels[static_cast<std::size_t>(
-                        (y - tile.y0) * tile.width() + (x - tile.x0))];
+                for (int x = tile.x0; x < tile.x1; ++x) {
+                    result.film.at(x, y) = tilePixels[index(x, y)];
+                    for (std::size_t i = 0; i < options.aovs.size(); ++i)
+                        result.aovFilms[i].at(x, y) = options.aovs[i]->value(tileAovs[index(x, y)]);
+                }
             report(result.film, tile, false);
             return true;
         });

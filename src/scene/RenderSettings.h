@@ -17,6 +17,9 @@ struct RenderSettings {
     // The widest and tallest image the scene file and --width, --height accept (a 32768 x 32768
     // film takes 12 GiB); the memory the image's buffers need is checked as well.
     static constexpr int kMaxImageSide = 32768;
+    // The most stops of exposure either way: 2^64 times any radiance a scene makes still fits
+    // a float.
+    static constexpr int kMaxExposure = 64;
     // The most samples per pixel the scene file ("spp", "max_spp", "min_spp") and --spp accept:
     // the render stops between a tile's rows when interrupted, and a row of 2^20 samples a pixel
     // still takes seconds, not hours (2^30 took longer than anyone waits, even for 8 x 6 pixels).
@@ -29,6 +32,8 @@ struct RenderSettings {
     std::string integrator = "whitted";
     FilterSettings filter;                     // the reconstruction filter
     std::optional<AdaptiveSettings> adaptive;  // none: every pixel takes samplesPerPixel
+    float exposure = 0;                        // stops: the outputs are scaled by 2^exposure
+    std::string tonemap = "clamp";             // the 8-bit outputs' tone operator
     RadiositySettings radiosity;               // the top-level "radiosity" block
 };
 

@@ -2,6 +2,7 @@
 
 #include "accel/Bvh.h"
 #include "geometry/Shape.h"
+#include "lights/EnvironmentLight.h"
 #include "lights/Light.h"
 #include "materials/Material.h"
 
@@ -48,6 +49,15 @@ void Scene::buildAccelerationStructure() {
 
 void Scene::addLight(std::unique_ptr<Light> light) {
     lights_.push_back(std::move(light));
+}
+
+void Scene::setEnvironment(std::unique_ptr<EnvironmentLight> environment) {
+    environment_ = environment.get();
+    addLight(std::move(environment));
+}
+
+Color Scene::background(const Vec3& direction) const {
+    return environment_ ? environment_->radiance(direction) : background_;
 }
 
 std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {

@@ -16,6 +16,7 @@
 namespace lancer {
 
 class Bvh;
+class EnvironmentLight;
 class Light;
 class Material;
 class Shape;
@@ -43,8 +44,15 @@ public:
     const Camera& camera() const { return camera_; }
     void setCamera(const Camera& camera) { camera_ = camera; }
 
+    // The colour of rays that leave the scene when it has no environment.
     const Color& background() const { return background_; }
     void setBackground(const Color& c) { background_ = c; }
+    // The radiance a ray leaving the scene along `direction` sees: the environment's, or the
+    // background colour.
+    Color background(const Vec3& direction) const;
+    // The environment is one of the lights too (it is sampled and lights every integrator).
+    void setEnvironment(std::unique_ptr<EnvironmentLight> environment);
+    const EnvironmentLight* environment() const { return environment_; }
     const Color& ambient() const { return ambient_; }
     void setAmbient(const Color& c) { ambient_ = c; }
 
@@ -84,6 +92,7 @@ private:
     RenderSettings settings_;
     Camera camera_;
     Color background_{0};
+    const EnvironmentLight* environment_ = nullptr;  // one of lights_, or none
     Color ambient_{0};
     std::vector<std::unique_ptr<Material>> materials_;
     std::vector<std::unique_ptr<Shape>> boundedShapes_;  // in the BVH's leaf order once built

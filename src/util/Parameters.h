@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,9 @@ public:
     // One of `options` (a string), as its index.
     virtual std::size_t choice(const std::string& key,
                                const std::vector<std::string>& options) const = 0;
+    // The keys of the object that is the key's value, which must have only the given keys.
+    virtual std::unique_ptr<Parameters> object(const std::string& key,
+                                               const std::vector<std::string>& keys) const = 0;
     // An error at the key's value (or at the object, for a key it does not have).
     [[noreturn]] virtual void fail(const std::string& key, const std::string& message) const = 0;
 };

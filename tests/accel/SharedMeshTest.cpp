@@ -65,7 +65,8 @@ std::vector<fs::path> shippedModels() {
 
 std::shared_ptr<TriangleMesh> loadModel(const fs::path& path) {
     // Textures play no part in intersection.
-    const auto constantTexture = [](const fs::path&) -> std::shared_ptr<const Texture> {
+    const auto constantTexture = [](const fs::path&,
+                                    ImageReader::Content) -> std::shared_ptr<const Texture> {
         return std::make_shared<ConstantTexture>(Color(0.5f));
     };
     std::vector<std::string> warnings;  // the spider's dropped zero-area triangles, for one

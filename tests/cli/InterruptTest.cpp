@@ -22,11 +22,22 @@ constexpr int kWidth = 640, kHeight = 480;
 // About 15 s of work for two threads in a release build (longer under sanitizers): far more
 // than the delay before the signal, while one 16x16 tile takes a few dozen milliseconds, so that
 // some are finished by then.
-LancerProcess startLongRender(const TempFolder& folder) {
+LancerProcess startLongRender(const TempFolder& folder,
+                              const std::vector<std::string>& moreOptions = {}) {
     folder.write("scene.json", loadWhittedScene().dump());
-    return LancerProcess({"scene.json", "-o", "out.pfm", "--width", std::to_string(kWidth),
-                          "--height", std::to_string(kHeight), "--spp", "64", "--threads", "2"},
-                         folder.path());
+    std::vector<std::string> arguments = {"scene.json",
+                                          "-o",
+                                          "out.pfm",
+                                          "--width",
+                                          std::to_string(kWidth),
+                                          "--height",
+                                          std::to_string(kHeight),
+                                          "--spp",
+                                          "64",
+                                          "--threads",
+                                          "2"};
+    arguments.insert(arguments.end(), moreOptions.begin(), moreOptions.end());
+    return LancerProcess(arguments, folder.path());
 }
 
 // The partial image: its size, some of it rendered and some not.
@@ -74,6 +85,32 @@ INSTANTIATE_TEST_SUITE_P(Signals, CliInterrupt,
                                          SignalCase{"Term", SIGTERM, 143},
                                          SignalCase{"Hangup", SIGHUP, 129}),
                          CaseName());
+
+// The auxiliary outputs are written with the partial image, holding the same tiles. The crop
+// starts below the horizon, so that the first tiles see the floor (depth > 0) rather than the sky.
+TEST(CliInterruptWithAovs, WritesThemWithTheFinishedPart) {
+    const TempFolder folder;
+    LancerProcess lancer = startLongRender(folder, {"--aov", "depth", "--crop", "0,300,640,480"});
+    std::this_thread::sleep_for(std::chrono::seconds(1));
+    lancer.sendSignal(SIGINT);
+    const RunResult run = lancer.wait(std::chrono::seconds(20));
+    EXPECT_EQ(run.exitStatus, 130) << run;
+    EXPECT_EQ(folder.entries(),
+              (std::vector<std::string>{"out.depth.exr", "out.pfm", "scene.json"}));
+    expectPartialImage(folder);
+    const Image image = loadImage(folder / "out.pfm");
+    const Image depth = loadImage(folder / "out.depth.exr");
+    ASSERT_EQ(depth.pixels.size(), image.pixels.size());
+    std::size_t rendered = 0;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        // Unrendered pixels (black) have no depth; a rendered one may be sky (depth 0 too).
+        if (image.pixels[i] == Image::Rgb{0, 0, 0})
+            ASSERT_EQ(depth.pixels[i], (Image::Rgb{0, 0, 0})) << "pixel " << i;
+        else
+            rendered += depth.pixels[i][0] > 0;
+    }
+    EXPECT_GT(rendered, 0u);
+}
 
 TEST(CliInterruptAgain, MoreCtrlCsWhileItStopsAndSavesAreHarmless) {
     const TempFolder folder;

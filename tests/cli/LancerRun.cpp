@@ -260,6 +260,38 @@ void requireSameSize(const Image& a, const Image& b) {
 
 }  // namespace
 
+Image blockAverage(const Image& image, int block) {
+    Image out;
+    out.width = image.width / block;
+    out.height = image.height / block;
+    out.pixels.assign(static_cast<std::size_t>(out.width * out.height), {0, 0, 0});
+    for (int y = 0; y < out.height * block; ++y)
+        for (int x = 0; x < out.width * block; ++x)
+            for (int c = 0; c < 3; ++c)
+                out.pixels[static_cast<std::size_t>((y / block) * out.width + x / block)]
+                          [static_cast<std::size_t>(c)] +=
+                    image.at(x, y)[static_cast<std::size_t>(c)] / static_cast<float>(block * block);
+    return out;
+}
+
+double meanValue(const Image& image) {
+    double sum = 0;
+    for (const Image::Rgb& p : image.pixels)
+        sum += p[0] + p[1] + p[2];
+    return sum / (3.0 * static_cast<double>(image.pixels.size()));
+}
+
+double relativeRmse(const Image& image, const Image& reference) {
+    requireSameSize(image, reference);
+    double sum = 0;
+    for (std::size_t i = 0; i < image.pixels.size(); ++i)
+        for (std::size_t c = 0; c < 3; ++c) {
+            const double d = image.pixels[i][c] - reference.pixels[i][c];
+            sum += d * d;
+        }
+    return std::sqrt(sum / (3.0 * static_cast<double>(image.pixels.size()))) / meanValue(reference);
+}
+
 double maxAbsoluteDifference(const Image& a, const Image& b) {
     requireSameSize(a, b);
     double largest = 0;

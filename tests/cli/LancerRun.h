@@ -106,6 +106,13 @@ struct Image {
 // definition, as FreeImage gets its row order wrong); throws std::runtime_error when it cannot.
 Image loadImage(const fs::path& path);
 
+// The image averaged over blocks of block x block pixels.
+Image blockAverage(const Image& image, int block);
+// The mean over all pixels and channels.
+double meanValue(const Image& image);
+// The error measure of the comparisons with Mitsuba (the benchmark's too): the root mean square
+// of the difference over all pixels and channels, relative to the reference's mean value.
+double relativeRmse(const Image& image, const Image& reference);
 // The largest |a - b| over all channels of two images of the same size.
 double maxAbsoluteDifference(const Image& a, const Image& b);
 // The mean |a - b| over all channels.

@@ -102,6 +102,25 @@ TEST(CliImageLimit, MaxMemoryReplacesTheMachinesMemory) {
     EXPECT_EQ(loadImage(folder / "out.png").width, 1000);
 }
 
+// Each auxiliary output adds its film and its EXR's bitmap and file (36 bytes a pixel again).
+TEST(CliImageLimit, TheAuxiliaryOutputsCountInTheMemoryNeeded) {
+    constexpr int kSide = RenderSettings::kMaxImageSide;
+    const std::uint64_t needed = 4 * 36ull * kSide * kSide;
+    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    if (static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(pageSize) >= needed)
+        GTEST_SKIP() << "this machine has the memory for the largest image and its outputs";
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const RunResult run =
+        runLancer({"scene.json", "-o", "out.pfm", "--width", std::to_string(kSide), "--height",
+                   std::to_string(kSide), "--aov", "albedo,normal,depth"},
+                  folder.path(), std::chrono::seconds(10));
+    EXPECT_EQ(run.exitStatus, 2) << run;
+    EXPECT_NE(run.standardError.find("image needs about 154.6 GB of memory"), std::string::npos)
+        << run;
+    EXPECT_EQ(folder.entries(), std::vector<std::string>{"scene.json"});
+}
+
 // Inputs that would grow memory without end: a device read as a scene, an OBJ or an MTL file,
 // and files larger than their limits (sparse files: their size costs no disk). Each is refused
 // with one line and exit status 2 within a second, and nothing is written.

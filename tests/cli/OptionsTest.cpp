@@ -135,7 +135,7 @@ TEST(CliHelp, ListsEveryOptionOfTheContract) {
     EXPECT_EQ(run.exitStatus, 0) << run;
     for (const char* option :
          {"--output", "--width", "--height", "--spp", "--max-depth", "--integrator", "--threads",
-          "--seed", "--crop", "--window", "--quiet", "--help", "--version"})
+          "--seed", "--crop", "--aov", "--window", "--quiet", "--help", "--version"})
         EXPECT_NE(run.standardOutput.find(option), std::string::npos) << option;
 }
 

@@ -360,40 +360,6 @@ TEST(PathDeterminism, OneAndTwoThreadsWriteByteIdenticalFiles) {
 const fs::path kCornellFolder = fs::path(LANCER_SOURCE_DIR) / "tests/cli/data/cornell";
 constexpr int kBlock = 8;
 
-// The image averaged over blocks of block x block pixels.
-Image blockAverage(const Image& image, int block) {
-    Image out;
-    out.width = image.width / block;
-    out.height = image.height / block;
-    out.pixels.assign(static_cast<std::size_t>(out.width * out.height), {0, 0, 0});
-    for (int y = 0; y < out.height * block; ++y)
-        for (int x = 0; x < out.width * block; ++x)
-            for (int c = 0; c < 3; ++c)
-                out.pixels[static_cast<std::size_t>((y / block) * out.width + x / block)]
-                          [static_cast<std::size_t>(c)] +=
-                    image.at(x, y)[static_cast<std::size_t>(c)] / static_cast<float>(block * block);
-    return out;
-}
-
-double meanValue(const Image& image) {
-    double sum = 0;
-    for (const Image::Rgb& p : image.pixels)
-        sum += p[0] + p[1] + p[2];
-    return sum / (3.0 * static_cast<double>(image.pixels.size()));
-}
-
-// The error measure of the comparison (the benchmark's too): the root mean square of the
-// difference over all pixels and channels, relative to the reference's mean value.
-double relativeRmse(const Image& image, const Image& reference) {
-    double sum = 0;
-    for (std::size_t i = 0; i < image.pixels.size(); ++i)
-        for (std::size_t c = 0; c < 3; ++c) {
-            const double d = image.pixels[i][c] - reference.pixels[i][c];
-            sum += d * d;
-        }
-    return std::sqrt(sum / (3.0 * static_cast<double>(image.pixels.size()))) / meanValue(reference);
-}
-
 // Two renders with different seeds measure the noise: their difference has twice the variance
 // of one, so the noise of one is rmse(a, b) / sqrt(2). The reference has noise of its own; at
 // 16384 samples against our spp it is sqrt(spp / 16384) of ours (taking Mitsuba's variance per

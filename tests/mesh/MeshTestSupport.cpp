@@ -44,8 +44,10 @@ fs::path ScratchFolder::write(const std::string& relativePath, const std::string
 }
 
 ObjLoader::TextureLoader FakeTextures::loader() {
-    return [this](const fs::path& path) -> std::shared_ptr<const Texture> {
+    return [this](const fs::path& path,
+                  ImageReader::Content content) -> std::shared_ptr<const Texture> {
         requested_.push_back(path);
+        contents_.push_back(content);
         if (!fs::exists(path)) throw InputError(path.string(), "cannot open the image");
         return std::make_shared<ConstantTexture>(kColor);
     };

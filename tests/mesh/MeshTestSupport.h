@@ -46,9 +46,12 @@ public:
 
     ObjLoader::TextureLoader loader();
     const std::vector<std::filesystem::path>& requested() const { return requested_; }
+    // Whether each was asked for as colour or as data, in the same order.
+    const std::vector<ImageReader::Content>& contents() const { return contents_; }
 
 private:
     std::vector<std::filesystem::path> requested_;
+    std::vector<ImageReader::Content> contents_;
 };
 
 struct LoadedObj {

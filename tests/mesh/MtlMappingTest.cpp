@@ -1,7 +1,12 @@
-// MTL materials mapped onto ours (the table at the top of src/io/ObjLoader.cpp): every key, every
-// illum model, defaults, texture paths, and the warnings for missing files.
+// MTL materials mapped onto ours (the table at the top of src/io/MtlMaterialConverter.cpp): every
+// key, every illum model, defaults, texture paths, normal and bump maps, and the warnings for
+// missing files.
+
+#include <cmath>
 
 #include "MeshTestSupport.h"
+#include "geometry/Hit.h"
+#include "materials/Material.h"
 
 namespace lancer::test {
 namespace {
@@ -285,6 +290,78 @@ TEST_F(MtlTest, EachTextureIsLoadedOnce) {
         "newmtl a\nmap_Kd wood.png\nnewmtl b\nKs 1 1 1\nmap_Kd ./wood.png\n", {"a", "b"});
     EXPECT_EQ(textures_.requested().size(), 1u);
     EXPECT_EQ(materialOf(*loaded.mesh, 0).diffuse, materialOf(*loaded.mesh, 1).diffuse);
+}
+
+// The shading normal of triangle `triangle` of the mesh, in the plane z = 0 with u along +x and v
+// along +y, seen from above it.
+Vec3 shadingNormalOf(const TriangleMesh& mesh, std::size_t triangle) {
+    Hit hit;
+    hit.ng = hit.ns = Vec3(0, 0, 1);
+    hit.dpdu = Vec3(1, 0, 0);
+    hit.dpdv = Vec3(0, 1, 0);
+    return mesh.materials.at(mesh.faceMaterials.at(triangle))->shadingNormal(hit, Vec3(0, 0, 1));
+}
+
+// norm is a tangent-space normal map read as data: the fake texture's (0.25, 0.5, 0.75) is
+// n_ts = (-0.5, 0, 0.5), a normal leaning 45 degrees towards -u.
+TEST_F(MtlTest, NormIsTheNormalMapReadAsData) {
+    folder_.write("normals.png", "");
+    const LoadedObj loaded = loadWithMaterials("newmtl m\nnorm normals.png\n", {"m"});
+    EXPECT_TRUE(loaded.warnings.empty());
+    EXPECT_EQ(textures_.requested(), std::vector<fs::path>{folder_.path() / "normals.png"});
+    EXPECT_EQ(textures_.contents(), std::vector<ImageReader::Content>{ImageReader::Content::Data});
+    const Vec3 n = shadingNormalOf(*loaded.mesh, 0);
+    EXPECT_NEAR(n.x, -std::sqrt(0.5f), 1e-6f);
+    EXPECT_NEAR(n.y, 0, 1e-6f);
+    EXPECT_NEAR(n.z, std::sqrt(0.5f), 1e-6f);
+}
+
+// bump, map_Bump and map_bump (with their -bm multiplier) name the height map, read as data. A
+// constant height has no slope: the normal stays.
+TEST_F(MtlTest, BumpAndMapBumpAreTheBumpMapReadAsData) {
+    folder_.write("a.png", "");
+    folder_.write("b.png", "");
+    folder_.write("c.png", "");
+    const LoadedObj loaded = loadWithMaterials(
+        "newmtl a\nbump -bm 0.5 a.png\nnewmtl b\nmap_Bump b.png\nnewmtl c\nmap_bump -bm 2 c.png\n",
+        {"a", "b", "c"});
+    EXPECT_TRUE(loaded.warnings.empty());
+    EXPECT_EQ(textures_.requested(),
+              (std::vector<fs::path>{folder_.path() / "a.png", folder_.path() / "b.png",
+                                     folder_.path() / "c.png"}));
+    EXPECT_EQ(textures_.contents(),
+              std::vector<ImageReader::Content>(3, ImageReader::Content::Data));
+    for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_EQ(shadingNormalOf(*loaded.mesh, i), Vec3(0, 0, 1));
+}
+
+TEST_F(MtlTest, NormWinsOverBumpWithAWarning) {
+    folder_.write("normals.png", "");
+    folder_.write("heights.png", "");
+    const LoadedObj loaded =
+        loadWithMaterials("newmtl m\nbump heights.png\nnorm normals.png\n", {"m"});
+    ASSERT_EQ(loaded.warnings.size(), 1u);
+    EXPECT_EQ(countContaining(loaded.warnings, "both a normal map (norm) and a bump map"), 1u);
+    EXPECT_EQ(textures_.requested(), std::vector<fs::path>{folder_.path() / "normals.png"});
+}
+
+TEST_F(MtlTest, MissingNormalMapGivesOneWarningAndNoMap) {
+    const LoadedObj loaded = loadWithMaterials("newmtl m\nnorm gone.png\n", {"m"});
+    ASSERT_EQ(loaded.warnings.size(), 1u);
+    EXPECT_EQ(countContaining(loaded.warnings,
+                              "(norm of material \"m\") cannot be loaded; the "
+                              "surface is shaded without it"),
+              1u);
+    EXPECT_EQ(shadingNormalOf(*loaded.mesh, 0), Vec3(0, 0, 1));
+}
+
+// One file as both a colour texture and a map is read twice, once as each.
+TEST_F(MtlTest, OneFileAsColourAndAsMapIsReadOnceAsEach) {
+    folder_.write("both.png", "");
+    const LoadedObj loaded = loadWithMaterials("newmtl m\nmap_Kd both.png\nbump both.png\n", {"m"});
+    EXPECT_TRUE(loaded.warnings.empty());
+    EXPECT_EQ(textures_.contents(), (std::vector<ImageReader::Content>{
+                                        ImageReader::Content::Color, ImageReader::Content::Data}));
 }
 
 }  // namespace

@@ -220,6 +220,25 @@ TEST_F(ImageReaderTest, DecodesSixteenBitImagesFromSrgb) {
     EXPECT_EQ(ImageReader::read(greyFile).at(0, 0), Color(srgbToLinear(20000 / 65535.0f)));
 }
 
+// Normal and bump maps are data: integer texels are scaled to [0, 1] and never sRGB-decoded,
+// 8 bits and 16 alike; float images are the same read either way.
+TEST_F(ImageReaderTest, ReadsIntegerMapsAsLinearData) {
+    const path colourFile = folder / "rgb16.png";
+    Bitmap colour(FreeImage_AllocateT(FIT_RGB16, 1, 1));
+    *reinterpret_cast<FIRGB16*>(FreeImage_GetScanLine(colour.get(), 0)) = {1000, 32768, 65535};
+    test::save(colour, colourFile, FIF_PNG);
+    EXPECT_EQ(ImageReader::read(colourFile, ImageReader::Content::Data).at(0, 0),
+              Color(1000 / 65535.0f, 32768 / 65535.0f, 1));
+
+    const path greyFile = folder / "grey8.png";
+    Bitmap grey(FreeImage_Allocate(1, 1, 8));  // with a grey ramp palette
+    *FreeImage_GetScanLine(grey.get(), 0) = 128;
+    test::save(grey, greyFile, FIF_PNG);
+    EXPECT_EQ(ImageReader::read(greyFile, ImageReader::Content::Data).at(0, 0),
+              Color(128 / 255.0f));
+    EXPECT_EQ(ImageReader::read(greyFile).at(0, 0), Color(srgbToLinear(128 / 255.0f)));
+}
+
 // FreeImage's own conversion to float misreads these (as if they had 3 bytes a texel).
 TEST_F(ImageReaderTest, ReadsSixteenBitRgbBitmaps) {
     const Bitmap truecolour = test::makeBitmap8(

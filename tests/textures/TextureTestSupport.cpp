@@ -66,16 +66,4 @@ void save(const Bitmap& bitmap, const fs::path& path, FREE_IMAGE_FORMAT format, 
         throw std::runtime_error("cannot write the test image " + path.string());
 }
 
-void writePfm(const Image& image, const fs::path& path) {
-    std::ofstream out(path, std::ios::binary);
-    out << "PF\n" << image.width() << ' ' << image.height() << "\n-1.0\n";
-    for (int y = image.height() - 1; y >= 0; --y)
-        for (int x = 0; x < image.width(); ++x) {
-            const Color& c = image.at(x, y);
-            const float rgb[3] = {c.r, c.g, c.b};
-            out.write(reinterpret_cast<const char*>(rgb), sizeof rgb);
-        }
-    if (!out) throw std::runtime_error("cannot write the test image " + path.string());
-}
-
 }  // namespace lancer::test

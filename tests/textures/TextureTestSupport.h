@@ -12,6 +12,7 @@
 
 #include "image/Image.h"
 
+#include "PfmFile.h"
 #include "TempFolder.h"
 
 namespace lancer::test {
@@ -48,9 +49,5 @@ Bitmap makeBitmapFloat(const Image& image);
 // Saves through FreeImage; throws when it fails, so that a test never reads a file it did not
 // write.
 void save(const Bitmap& bitmap, const fs::path& path, FREE_IMAGE_FORMAT format, int flags = 0);
-
-// Writes a PFM file as the netpbm definition has it (little-endian, the bottom row first), without
-// FreeImage, whose PFM writer stores the top row first.
-void writePfm(const Image& image, const fs::path& path);
 
 }  // namespace lancer::test

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "DirectionChiSquare.h"
 #include "geometry/Hit.h"
 #include "materials/BlinnPhongLobe.h"
 #include "materials/BlinnPhongMaterial.h"
@@ -30,133 +31,6 @@
 
 namespace lancer::test {
 namespace {
-
-// Uniform numbers in [0, 1) from a seeded generator: the tests are repeatable.
-class UniformSource {
-public:
-    explicit UniformSource(unsigned seed) : engine_(seed) {}
-    float next() { return std::min(distribution_(engine_), 0x1.fffffep-1f); }
-    Vec2 next2D() { return {next(), next()}; }
-
-private:
-    std::mt19937 engine_;
-    std::uniform_real_distribution<float> distribution_{0.0f, 1.0f};
-};
-
-Vec3 direction(float thetaDegrees, float phiDegrees) {
-    const float theta = radians(thetaDegrees), phi = radians(phiDegrees);
-    return {std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
-}
-
-// Q(a, x), the regularized upper incomplete gamma function (Numerical Recipes' gammq): the
-// probability that a chi-square variable of 2a degrees of freedom exceeds 2x.
-double upperIncompleteGamma(double a, double x) {
-    constexpr double kEpsilon = 1e-14, kTiny = 1e-300;
-    const double logPrefactor = -x + a * std::log(x) - std::lgamma(a);
-    if (x < a + 1) {  // the series of P = 1 - Q
-        double term = 1 / a, sum = term;
-        for (double ap = a + 1; std::abs(term) > std::abs(sum) * kEpsilon; ap += 1) {
-            term *= x / ap;
-            sum += term;
-        }
-        return 1 - sum * std::exp(logPrefactor);
-    }
-    // Q's continued fraction, by Lentz's method.
-    double b = x + 1 - a, c = 1 / kTiny, d = 1 / b, h = d;
-    for (int i = 1; i < 10000; ++i) {
-        const double an = -i * (i - a);
-        b += 2;
-        d = an * d + b;
-        if (std::abs(d) < kTiny) d = kTiny;
-        c = b + an / c;
-        if (std::abs(c) < kTiny) c = kTiny;
-        d = 1 / d;
-        const double delta = d * c;
-        h *= delta;
-        if (std::abs(delta - 1) < kEpsilon) break;
-    }
-    return std::exp(logPrefactor) * h;
-}
-
-// A way of drawing directions, and the density it claims for them.
-struct DirectionSampler {
-    std::function<std::optional<Vec3>(UniformSource&)> sample;
-    std::function<double(const Vec3&)> pdf;
-};
-
-// Draws `count` directions and compares their histogram over a grid of the sphere (theta from
-// +z, phi around it) with the counts the density predicts, integrated over each cell by the
-// midpoint rule on a fine sub-grid. Cells expecting fewer than 5 hits are pooled (the chi-square
-// approximation needs it). Returns the p-value of the observed histogram; a direction where the
-// density says none can be also fails the test.
-double chiSquarePValue(const DirectionSampler& sampler, int count, unsigned seed,
-                       std::string& problem) {
-    constexpr int kThetaCells = 16, kPhiCells = 32, kSubCells = 24;
-    const auto cellOf = [](const Vec3& w) {
-        const double theta = std::acos(std::clamp(static_cast<double>(w.z), -1.0, 1.0));
-        double phi = std::atan2(static_cast<double>(w.y), static_cast<double>(w.x));
-        if (phi < 0) phi += 2 * std::numbers::pi;
-        const int i =
-            std::min(kThetaCells - 1, static_cast<int>(theta / std::numbers::pi * kThetaCells));
-        const int j =
-            std::min(kPhiCells - 1, static_cast<int>(phi / (2 * std::numbers::pi) * kPhiCells));
-        return i * kPhiCells + j;
-    };
-    std::vector<double> observed(kThetaCells * kPhiCells, 0.0);
-    UniformSource random(seed);
-    for (int k = 0; k < count; ++k)
-        if (const auto w = sampler.sample(random))
-            observed[static_cast<std::size_t>(cellOf(*w))] += 1;
-
-    std::vector<double> expected(observed.size(), 0.0);
-    const double dTheta = std::numbers::pi / kThetaCells, dPhi = 2 * std::numbers::pi / kPhiCells;
-    for (int i = 0; i < kThetaCells; ++i)
-        for (int j = 0; j < kPhiCells; ++j) {
-            double sum = 0;
-            for (int a = 0; a < kSubCells; ++a)
-                for (int b = 0; b < kSubCells; ++b) {
-                    const double theta = (i + (a + 0.5) / kSubCells) * dTheta;
-                    const double phi = (j + (b + 0.5) / kSubCells) * dPhi;
-                    const Vec3 w(static_cast<float>(std::sin(theta) * std::cos(phi)),
-                                 static_cast<float>(std::sin(theta) * std::sin(phi)),
-                                 static_cast<float>(std::cos(theta)));
-                    sum += sampler.pdf(w) * std::sin(theta);
-                }
-            expected[static_cast<std::size_t>(i * kPhiCells + j)] =
-                sum * dTheta * dPhi / (kSubCells * kSubCells) * count;
-        }
-
-    std::vector<std::size_t> order(observed.size());
-    for (std::size_t k = 0; k < order.size(); ++k)
-        order[k] = k;
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return expected[a] < expected[b]; });
-    double chiSquare = 0, pooledExpected = 0, pooledObserved = 0;
-    int bins = 0;
-    for (std::size_t k : order) {
-        if (expected[k] == 0 && observed[k] > count * 1e-5) {
-            std::ostringstream out;
-            out << observed[k] << " samples in cell " << k << " where the pdf is 0";
-            problem = out.str();
-            return 0;
-        }
-        if (expected[k] < 5) {
-            pooledExpected += expected[k];
-            pooledObserved += observed[k];
-        } else {
-            const double diff = observed[k] - expected[k];
-            chiSquare += diff * diff / expected[k];
-            ++bins;
-        }
-    }
-    if (pooledExpected > 0) {
-        const double diff = pooledObserved - pooledExpected;
-        chiSquare += diff * diff / std::max(pooledExpected, 5.0);
-        ++bins;
-    }
-    const int degreesOfFreedom = bins - 1;
-    return upperIncompleteGamma(degreesOfFreedom / 2.0, chiSquare / 2);
-}
 
 // One test in many may fail by chance with probability alpha; Bonferroni's correction keeps the
 // whole suite's false-alarm rate at 1%.
@@ -174,7 +48,7 @@ void expectChiSquarePasses(const DirectionSampler& sampler, unsigned seed) {
 
 DirectionSampler lobeSampler(const BsdfLobe& lobe, const Vec3& wo) {
     return {[&lobe, wo](UniformSource& random) -> std::optional<Vec3> {
-                const auto s = lobe.sample(wo, random.next2D());
+                const auto s = lobe.sample(wo, 0, random.next2D());
                 if (!s) return std::nullopt;
                 return s->wi;
             },
@@ -212,6 +86,8 @@ INSTANTIATE_TEST_SUITE_P(
 
 // A material made of the given weights, seen at a hit whose normals are +z (or the shading normal
 // tilted away from the geometric one by `tiltDegrees`).
+// The Bsdfs of these materials are given the shading normal as the viewer's direction: only a
+// normal or bump map, which these have none of, reads it.
 struct MaterialAtHit {
     BlinnPhongMaterial material;
     Hit hit;
@@ -236,7 +112,7 @@ struct MaterialAtHit {
 
 TEST(Bsdf, MixtureOfDiffuseAndHighlightFollowsItsPdf) {
     const MaterialAtHit m(0.3f, 0.5f, 40, 0, 0);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     for (const float theta : {0.0f, 50.0f, 120.0f}) {
         const Vec3 wo = direction(theta, 70);
         expectChiSquarePasses(
@@ -253,7 +129,7 @@ TEST(Bsdf, MixtureOfDiffuseAndHighlightFollowsItsPdf) {
 
 TEST(Bsdf, SampledValuesAreThoseOfFAndPdf) {
     const MaterialAtHit m(0.3f, 0.5f, 40, 0, 0);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     UniformSource random(3);
     const Vec3 wo = direction(35, 10);
     for (int k = 0; k < 1000; ++k) {
@@ -315,7 +191,7 @@ TEST(BlinnPhongLobe, SampleWeightsNeverExceedKsAndAverageToTheAlbedo) {
         constexpr int kSamples = 400'000;
         double sum = 0;
         for (int k = 0; k < kSamples; ++k) {
-            const auto s = lobe.sample(wo, random.next2D());
+            const auto s = lobe.sample(wo, 0, random.next2D());
             if (!s) continue;
             const double weight = s->f.r * std::abs(s->wi.z) / s->pdf;
             ASSERT_LE(weight, 0.9 * (1 + 1e-5));
@@ -329,7 +205,7 @@ TEST(BlinnPhongLobe, SampleWeightsNeverExceedKsAndAverageToTheAlbedo) {
 
 TEST(Bsdf, ReflectionIsReciprocal) {
     const MaterialAtHit m(0.4f, 0.5f, 25, 0, 0);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     const LambertianLobe lambertian(Color(0.7f));
     const BlinnPhongLobe blinnPhong(Color(0.7f), 60);
     UniformSource random(5);
@@ -348,7 +224,7 @@ TEST(Bsdf, ReflectionIsReciprocal) {
 // Weights above 1 in total are scaled down together: a white furnace on the whole BSDF.
 TEST(Bsdf, CombinedWeightsAboveOneAreScaledToConserveEnergy) {
     const MaterialAtHit m(0.9f, 0.6f, 20, 0.5f, 0, 0);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     UniformSource random(9);
     constexpr int kSamples = 200'000;
     for (const float theta : {0.0f, 45.0f, 80.0f}) {
@@ -368,7 +244,7 @@ TEST(Bsdf, CombinedWeightsAboveOneAreScaledToConserveEnergy) {
 TEST(MirrorLobe, ReflectsAboutTheNormalWithWeightKr) {
     const MirrorLobe mirror(Color(0.25f, 0.5f, 0.75f));
     const Vec3 wo = direction(30, 40);
-    const auto s = mirror.sample(wo, {0.3f, 0.6f});
+    const auto s = mirror.sample(wo, 0, {0.3f, 0.6f});
     ASSERT_TRUE(s);
     EXPECT_TRUE(s->isDelta);
     EXPECT_NEAR(s->wi.x, -wo.x, 1e-6f);
@@ -392,7 +268,7 @@ TEST(DielectricLobe, ConservesEnergyAndSplitsByFresnel) {
         constexpr int kSteps = 10000;
         double flux = 0, reflected = 0;
         for (int k = 0; k < kSteps; ++k) {
-            const auto s = glass.sample(wo, {(static_cast<float>(k) + 0.5f) / kSteps, 0.5f});
+            const auto s = glass.sample(wo, 0, {(static_cast<float>(k) + 0.5f) / kSteps, 0.5f});
             ASSERT_TRUE(s);
             const bool transmitted = s->wi.z * wo.z < 0;
             flux += s->f.r * std::abs(s->wi.z) / s->pdf * s->etaSquared;
@@ -416,7 +292,7 @@ TEST(DielectricLobe, ConservesEnergyAndSplitsByFresnel) {
 // A smooth-shading normal must not let a reflection lobe send light through the true surface.
 TEST(Bsdf, NoReflectionThroughTheGeometricSurface) {
     const MaterialAtHit m(0.8f, 0, 32, 0, 0, 30);
-    const Bsdf bsdf(m.material, m.hit);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
     // Above the shading horizon, below the geometric one.
     const Vec3 wo = direction(45, 0);
     const Vec3 wi = direction(100, 0);
@@ -435,15 +311,15 @@ TEST(Bsdf, NoReflectionThroughTheGeometricSurface) {
 // scaled): kd max(0, n.L) + ks max(0, n.h)^n, nothing for light behind the viewer's side.
 TEST(Bsdf, LocalResponseIsTheSceneFormatsEquation) {
     const MaterialAtHit m(0.7f, 0.6f, 20, 0.3f, 0);
-    const Bsdf bsdf(m.material, m.hit, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns, Bsdf::Weights::AsGiven);
     const Vec3 wo = direction(30, 0), wi = direction(50, 160);
     const float cosL = wi.z, cosH = normalize(wo + wi).z;
     const Color expected = Color(0.7f) * cosL + Color(0.6f) * std::pow(cosH, 20.0f);
-    EXPECT_NEAR(bsdf.localResponse(wo, wi, true).g, expected.g, 1e-6f);
-    EXPECT_TRUE(bsdf.localResponse(wo, direction(100, 0), true).isBlack());
+    EXPECT_NEAR(bsdf.localResponse(wo, wi, true, true).g, expected.g, 1e-6f);
+    EXPECT_TRUE(bsdf.localResponse(wo, direction(100, 0), true, true).isBlack());
     // Seen from the back side, the model is mirrored.
     const auto mirrored = [](const Vec3& v) { return Vec3(v.x, v.y, -v.z); };
-    EXPECT_NEAR(bsdf.localResponse(mirrored(wo), mirrored(wi), false).g, expected.g, 1e-6f);
+    EXPECT_NEAR(bsdf.localResponse(mirrored(wo), mirrored(wi), false, true).g, expected.g, 1e-6f);
     EXPECT_NEAR(bsdf.diffuseReflectance().r, 0.7f, 0);
     EXPECT_TRUE(bsdf.hasGlossyLobe());
 }
@@ -452,7 +328,7 @@ TEST(Bsdf, LocalResponseIsTheSceneFormatsEquation) {
 // Snell's direction; under total internal reflection, the reflection alone with kr + kt.
 TEST(Bsdf, SpecularRaysMergeTheReflectionsAndSplitGlassByFresnel) {
     const MaterialAtHit m(0, 0, 20, 0.25f, 0.5f);
-    const Bsdf bsdf(m.material, m.hit, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns, Bsdf::Weights::AsGiven);
     EXPECT_FALSE(bsdf.hasGlossyLobe());
     std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
     const Vec3 wo = direction(40, 10);
@@ -475,7 +351,7 @@ TEST(Bsdf, SpecularRaysMergeTheReflectionsAndSplitGlassByFresnel) {
 // Glass alone, with no mirror: the reflection is its Fresnel share, ahead of the refraction.
 TEST(Bsdf, SpecularRaysOfGlassAloneStartWithItsReflection) {
     const MaterialAtHit m(0.5f, 0, 20, 0, 1);
-    const Bsdf bsdf(m.material, m.hit, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(m.material, m.hit, m.hit.ns, Bsdf::Weights::AsGiven);
     std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
     const Vec3 wo = direction(0, 0);
     ASSERT_EQ(bsdf.specularRays(wo, true, rays), 2u);
@@ -483,7 +359,8 @@ TEST(Bsdf, SpecularRaysOfGlassAloneStartWithItsReflection) {
     EXPECT_NEAR(rays[1].direction.z, -1, 1e-6f);
     // A diffuse material alone traces nothing.
     const MaterialAtHit matte(0.5f, 0, 20, 0, 0);
-    EXPECT_EQ(Bsdf(matte.material, matte.hit, Bsdf::Weights::AsGiven).specularRays(wo, true, rays),
+    EXPECT_EQ(Bsdf(matte.material, matte.hit, matte.hit.ns, Bsdf::Weights::AsGiven)
+                  .specularRays(wo, true, rays),
               0u);
 }
 

@@ -131,6 +131,50 @@ TEST_F(LiveWindow, ShowsTheSavedImageOnceTheRenderEndsAndStaysOpenUntilClosed) {
     EXPECT_EQ(readFile(folder_ / "plain.png"), readFile(folder_ / "out.png"));
 }
 
+// The window shows the image as the 8-bit output stores it, exposure and tone operator included,
+// and saves its snapshots the same way.
+TEST_F(LiveWindow, ShowsTheExposedAndToneMappedImageAsThePngHoldsIt) {
+    nlohmann::json scene = loadWhittedScene();
+    scene["render"]["exposure"] = 1.5;
+    scene["render"]["tonemap"] = "aces";
+    folder_.write("scene.json", scene.dump());
+    LancerProcess lancer(withWindow(quickRender("out.png")), folder_.path());
+    const X11Window window = findWindow();
+    ASSERT_TRUE(window.waitForTitle("done", kWait)) << "title: " << window.title();
+    const Image saved = loadImage(folder_ / "out.png");
+    EXPECT_EQ(maxAbsoluteDifference(window.screenshot(), saved), 0);
+    window.pressKey(XK_s);
+    ASSERT_TRUE(waitForFile(folder_ / "out-snapshot-1.png", kWait));
+    window.close();
+    EXPECT_EQ(lancer.wait(kWait).exitStatus, 0);
+    EXPECT_EQ(maxAbsoluteDifference(loadImage(folder_ / "out-snapshot-1.png"), saved), 0);
+
+    // Not the plain image: the mapping changed what is shown.
+    scene["render"].erase("exposure");
+    scene["render"].erase("tonemap");
+    folder_.write("scene.json", scene.dump());
+    ASSERT_EQ(runLancer(quickRender("plain.png"), folder_.path()).exitStatus, 0);
+    EXPECT_GT(maxAbsoluteDifference(loadImage(folder_ / "plain.png"), saved), 10);
+}
+
+// The auxiliary outputs are written with the image, the same as without the window.
+TEST_F(LiveWindow, WritesTheAuxiliaryOutputsWithTheImage) {
+    std::vector<std::string> arguments = withWindow(quickRender("out.png"));
+    arguments.insert(arguments.end(), {"--aov", "depth"});
+    LancerProcess lancer(arguments, folder_.path());
+    const X11Window window = findWindow();
+    ASSERT_TRUE(window.waitForTitle("done", kWait)) << "title: " << window.title();
+    window.close();
+    EXPECT_EQ(lancer.wait(kWait).exitStatus, 0);
+    EXPECT_EQ(folder_.entries(),
+              (std::vector<std::string>{"out.depth.exr", "out.png", "scene.json"}));
+
+    std::vector<std::string> plain = quickRender("plain.png");
+    plain.insert(plain.end(), {"--aov", "depth"});
+    ASSERT_EQ(runLancer(plain, folder_.path()).exitStatus, 0);
+    EXPECT_EQ(readFile(folder_ / "plain.depth.exr"), readFile(folder_ / "out.depth.exr"));
+}
+
 TEST_F(LiveWindow, SSavesWhatTheWindowShowsNextToTheOutput) {
     LancerProcess lancer(withWindow(quickRender("out.png")), folder_.path());
     const X11Window window = findWindow();

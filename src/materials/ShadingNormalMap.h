@@ -1,0 +1,18 @@
+#pragma once
+
+#include "math/Vec3.h"
+
+namespace lancer {
+
+struct Hit;
+
+// A map that perturbs the shading normal over a surface (a normal map or a bump map), held by a
+// material and applied when the BSDF's frame is made, so that every integrator sees it.
+class ShadingNormalMap {
+public:
+    virtual ~ShadingNormalMap() = default;
+    // The perturbed unit normal at the hit, on the side of hit.ns (which it replaces).
+    virtual Vec3 normal(const Hit& hit) const = 0;
+};
+
+}  // namespace lancer
