@@ -2,9 +2,10 @@
 # Builds the libFuzzer targets (the `fuzz` preset: clang, ASan + UBSan) and runs each for the
 # given number of seconds (default 60), one after the other, starting from the seed corpus in
 # tests/fuzz/corpus. New inputs go to build/fuzz/corpus/TARGET (the seeds are left as they are);
-# a crash, a leak, a timeout or an input needing more memory than allowed stops that target,
-# leaves the input as build/fuzz/findings/TARGET-crash-... and makes the script exit 1 once
-# every target has run. Usage: scripts/fuzz.sh [seconds] [target...]; targets: scene obj image
+# a crash, a leak, a timeout or an input needing more memory than allowed stops that target and
+# leaves the input as build/fuzz/findings/TARGET-crash-... (an input taking over 10 s is kept as
+# TARGET-slow-unit-... and the target goes on); any of them makes the script exit 1 once every
+# target has run. Usage: scripts/fuzz.sh [seconds] [target...]; targets: scene obj image
 # radiosity.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -28,8 +29,11 @@ for target in "${targets[@]}"; do
     [ "$target" = image ] && rss=6144
     if ! "build/fuzz/bin/fuzz_$target" "$corpus" "tests/fuzz/corpus/$target" \
         -max_total_time="$seconds" -timeout=30 -rss_limit_mb="$rss" -print_final_stats=1 \
-        -artifact_prefix="build/fuzz/findings/$target-" 2> "build/fuzz/$target.log"; then
+        -report_slow_units=10 -artifact_prefix="build/fuzz/findings/$target-" \
+        2> "build/fuzz/$target.log"; then
         failed+=("$target")
+    elif compgen -G "build/fuzz/findings/$target-slow-unit-*" > /dev/null; then
+        failed+=("$target")  # an input that took over 10 s: libFuzzer reports it, but goes on
     fi
     grep -E "^stat::|^#[0-9]+ +DONE|^Done" "build/fuzz/$target.log" || true
 done
