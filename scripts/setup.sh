@@ -9,6 +9,7 @@ packages=(
     libgtest-dev libgmock-dev libbenchmark-dev
     xvfb xauth libx11-dev libxtst-dev
     povray libembree-dev hyperfine
+    clang libclang-rt-14-dev  # libFuzzer (scripts/fuzz.sh); the runtime is packaged apart on Debian 12
 )
 
 missing=()

@@ -29,6 +29,7 @@
 #include "Viewer.h"
 #include "integrators/IntegratorRegistry.h"
 #include "io/ImageWriter.h"
+#include "io/InputFile.h"
 #include "io/SceneLoader.h"
 #include "radiosity/RadiositySolver.h"
 #include "render/Aov.h"
@@ -234,6 +235,8 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
                                                   const Options& options, Viewer* viewer) {
     RadiositySolution solution;
     if (options.loadRadiosity) {
+        InputFile::check(*options.loadRadiosity, "a radiosity file", "radiosity files",
+                         RadiositySolution::kMaxFileBytes);
         solution = RadiositySolution::load(*options.loadRadiosity);
         if (solution.fingerprint() != solver.fingerprint())
             throw InputError(*options.loadRadiosity,
@@ -450,7 +453,7 @@ int main(int argc, char** argv) {
     app.add_option("--height", options.height, "Image height in pixels (overrides the scene)")
         ->check(CLI::Range(1, RenderSettings::kMaxImageSide));
     app.add_option("--spp", options.spp, "Samples per pixel (overrides the scene)")
-        ->check(CLI::Range(1, 1 << 20));
+        ->check(CLI::Range(1, RenderSettings::kMaxSamplesPerPixel));
     app.add_option("--max-depth", options.maxDepth, "Recursion depth (overrides the scene)")
         ->check(CLI::Range(0, RenderSettings::kMaxDepthLimit));
     app.add_option("--integrator", options.integrator,

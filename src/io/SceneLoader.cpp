@@ -418,7 +418,8 @@ void SceneLoader::Reader::loadRender(const Node& node) {
         settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
     if (node.has("height"))
         settings.height = readInt(node["height"], 1, RenderSettings::kMaxImageSide);
-    if (node.has("spp")) settings.samplesPerPixel = readInt(node["spp"], 1);
+    if (node.has("spp"))
+        settings.samplesPerPixel = readInt(node["spp"], 1, RenderSettings::kMaxSamplesPerPixel);
     if (node.has("max_depth"))
         settings.maxDepth = readInt(node["max_depth"], 0, RenderSettings::kMaxDepthLimit);
     if (node.has("integrator")) {
@@ -469,11 +470,11 @@ void SceneLoader::Reader::loadAdaptive(const Node& render, const Node& node) {
             failAtKey(node["max_spp"],
                       "\"max_spp\" and the render's \"spp\" both set the most samples per "
                       "pixel; give one of them");
-        settings.samplesPerPixel = readInt(node["max_spp"], 1);
+        settings.samplesPerPixel = readInt(node["max_spp"], 1, RenderSettings::kMaxSamplesPerPixel);
     }
     if (node.has("min_spp")) {
         const Node minSpp = node["min_spp"];
-        adaptive.minSamples = readInt(minSpp, 1);
+        adaptive.minSamples = readInt(minSpp, 1, RenderSettings::kMaxSamplesPerPixel);
         if (adaptive.minSamples > settings.samplesPerPixel)
             fail(minSpp, "\"min_spp\" (" + std::to_string(adaptive.minSamples) +
                              ") is more than \"max_spp\" (" +

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "geometry/Triangle.h"
@@ -165,9 +164,16 @@ RadiositySolution RadiositySolution::load(const std::filesystem::path& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in || std::filesystem::is_directory(path))
         throw InputError(path.string(), "cannot open the radiosity file (does it exist?)");
-    std::ostringstream text;
-    text << in.rdbuf();
-    const std::string bytes = text.str();
+    // In blocks, so that a pipe that never ends stops at the limit.
+    std::string bytes;
+    std::string block(1 << 16, '\0');
+    while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
+        bytes.append(block.data(), static_cast<std::size_t>(in.gcount()));
+        if (bytes.size() > kMaxFileBytes)
+            throw InputError(path.string(), "is larger than the " +
+                                                std::to_string(kMaxFileBytes >> 30) +
+                                                " GiB limit for radiosity files");
+    }
     Reader reader(bytes, path);
     if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
         throw InputError(path.string(), "not a lancer radiosity file");

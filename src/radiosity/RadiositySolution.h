@@ -37,8 +37,12 @@ public:
     // Writes the solution (through a temporary file renamed into place); throws
     // std::runtime_error when it cannot.
     void save(const std::filesystem::path& path) const;
+    // The largest solution file read (a solution of 4 GiB holds some 50 million patches).
+    static constexpr std::uintmax_t kMaxFileBytes = std::uintmax_t{4} << 30;
+
     // Reads a saved solution; throws InputError naming the file when it cannot be read or is
-    // damaged.
+    // damaged, or when it (or a pipe) holds more than kMaxFileBytes. The caller refuses devices
+    // (/dev/zero) and folders before (io/InputFile).
     static RadiositySolution load(const std::filesystem::path& path);
 
 private:

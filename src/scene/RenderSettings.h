@@ -20,6 +20,10 @@ struct RenderSettings {
     // The most stops of exposure either way: 2^64 times any radiance a scene makes still fits
     // a float.
     static constexpr int kMaxExposure = 64;
+    // The most samples per pixel the scene file ("spp", "max_spp", "min_spp") and --spp accept:
+    // the render stops between a tile's rows when interrupted, and a row of 2^20 samples a pixel
+    // still takes seconds, not hours (2^30 took longer than anyone waits, even for 8 x 6 pixels).
+    static constexpr int kMaxSamplesPerPixel = 1 << 20;
 
     int width = 640;
     int height = 480;

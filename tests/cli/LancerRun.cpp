@@ -101,9 +101,11 @@ void LancerProcess::sendSignal(int signal) const {
 
 bool LancerProcess::hasEnded() {
     if (ended_ || pid_ <= 0) return ended_;
-    const pid_t done = waitpid(pid_, &status_, WNOHANG);
-    if (done < 0) throw std::runtime_error("waitpid failed");
+    rusage usage{};
+    const pid_t done = wait4(pid_, &status_, WNOHANG, &usage);
+    if (done < 0) throw std::runtime_error("wait4 failed");
     ended_ = done == pid_;
+    if (ended_) peakMemoryKilobytes_ = usage.ru_maxrss;
     return ended_;
 }
 
@@ -122,6 +124,7 @@ RunResult LancerProcess::wait(std::chrono::milliseconds timeout) {
     }
     pid_ = -1;
     const int status = status_;
+    result.peakMemoryKilobytes = peakMemoryKilobytes_;
     if (WIFEXITED(status)) result.exitStatus = WEXITSTATUS(status);
     if (WIFSIGNALED(status)) result.terminatingSignal = WTERMSIG(status);
     result.standardOutput = readFile(captureFolder_ / "stdout");

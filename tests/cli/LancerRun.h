@@ -28,6 +28,7 @@ struct RunResult {
     bool timedOut = false;       // killed by the test for running too long
     std::string standardOutput;  // what it printed
     std::string standardError;
+    long peakMemoryKilobytes = 0;  // the most resident memory the process had (not on Windows)
 
     // standardError cut into lines (without their '\n').
     std::vector<std::string> errorLines() const;
@@ -83,6 +84,7 @@ private:
     int pid_ = -1;
     bool ended_ = false;
     int status_ = 0;  // waitpid's, once ended
+    long peakMemoryKilobytes_ = 0;
 };
 #endif
 

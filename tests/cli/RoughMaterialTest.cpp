@@ -92,24 +92,31 @@ double headOnAlbedo(double alpha) {
     return 2 * std::numbers::pi * sum / kBands;
 }
 
-class RoughMirrorUnderUniformSky : public testing::TestWithParam<std::string> {};
-
-// A rough mirror sphere (alpha 0.6, kr 1, no Fresnel) under a sky of radiance 1, seen at its
-// centre through a 2-degree view: every pixel is the albedo head-on (the normal turns by at most
-// 1.5 degrees over the view, which moves the albedo by under 1e-4). The estimate averages 25 x
-// 1024 samples of weights G1(wi) in [0, 1], or 0 for a reflection into the surface (a standard
-// deviation near 0.35): a standard error near 0.0022, so 0.011 is 5 of them.
-TEST_P(RoughMirrorUnderUniformSky, ShowsTheSingleScatteringAlbedo) {
+// A unit sphere of the given material under a sky of radiance 1, seen head-on from 4 units away
+// through a 2-degree view (5 x 5 pixels): the normal turns by at most 1.5 degrees over the view.
+Image sphereUnderUniformSky(const json& material, int spp, const std::string& integrator) {
     json scene = json::parse(R"({
-      "render": { "width": 5, "height": 5, "spp": 1024, "max_depth": 3 },
+      "render": { "width": 5, "height": 5, "max_depth": 3 },
       "camera": { "position": [0, 0, 4], "look_at": [0, 0, 0], "vfov": 2 },
       "background": 1,
       "ambient": 0,
-      "materials": { "rough": { "diffuse": 0, "reflection": 1, "roughness": 0.6 } },
-      "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "rough" } ]
+      "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m" } ]
     })");
-    scene["render"]["integrator"] = GetParam();
-    const Image image = renderScene(scene).image;
+    scene["materials"] = {{"m", material}};
+    scene["render"]["spp"] = spp;
+    scene["render"]["integrator"] = integrator;
+    return renderScene(scene).image;
+}
+
+class RoughMirrorUnderUniformSky : public testing::TestWithParam<std::string> {};
+
+// A rough mirror sphere (alpha 0.6, kr 1, no Fresnel) under the uniform sky: every pixel is the
+// albedo head-on (the 1.5 degrees the normal turns move it by under 1e-4). The estimate averages 25
+// x 1024 samples of weights G1(wi) in [0, 1], or 0 for a reflection into the surface (a standard
+// deviation near 0.35): a standard error near 0.0022, so 0.011 is 5 of them.
+TEST_P(RoughMirrorUnderUniformSky, ShowsTheSingleScatteringAlbedo) {
+    const Image image = sphereUnderUniformSky(
+        json::parse(R"({ "diffuse": 0, "reflection": 1, "roughness": 0.6 })"), 1024, GetParam());
     const double expected = headOnAlbedo(0.6);
     // The known single-scattering loss: 41% at alpha 0.6 head-on, of which alpha^2 / (1 +
     // alpha^2) = 26% are the microfacets beyond 45 degrees, whose reflection enters the surface.
@@ -122,20 +129,11 @@ INSTANTIATE_TEST_SUITE_P(Integrators, RoughMirrorUnderUniformSky,
 
 class SmoothGoldUnderUniformSky : public testing::TestWithParam<std::string> {};
 
-// A smooth gold sphere under a sky of radiance 1, seen head-on through a 2-degree view, reflects
-// the sky with the table's reflectance at normal incidence (docs/SCENE-FORMAT.md: 0.967, 0.802,
-// 0.324); over the 1.5 degrees the normal turns, the Fresnel term changes by under 1e-4.
+// A smooth gold sphere under the uniform sky reflects it with the table's reflectance at normal
+// incidence (docs/SCENE-FORMAT.md: 0.967, 0.802, 0.324); over the 1.5 degrees the normal turns,
+// the Fresnel term changes by under 1e-4.
 TEST_P(SmoothGoldUnderUniformSky, ShowsTheTablesColourHeadOn) {
-    json scene = json::parse(R"({
-      "render": { "width": 5, "height": 5, "spp": 1, "max_depth": 3 },
-      "camera": { "position": [0, 0, 4], "look_at": [0, 0, 0], "vfov": 2 },
-      "background": 1,
-      "ambient": 0,
-      "materials": { "gold": { "metal": "gold" } },
-      "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "gold" } ]
-    })");
-    scene["render"]["integrator"] = GetParam();
-    const Image image = renderScene(scene).image;
+    const Image image = sphereUnderUniformSky(json::parse(R"({ "metal": "gold" })"), 1, GetParam());
     for (const Image::Rgb& pixel : image.pixels) {
         EXPECT_NEAR(pixel[0], 0.967, 6e-4);
         EXPECT_NEAR(pixel[1], 0.802, 6e-4);

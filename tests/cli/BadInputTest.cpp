@@ -1,0 +1,280 @@
+// The bad-input suite (issue 16): bad scenes, models, textures, options and radiosity files run
+// through the program. Each must end within kTimeBound and kMemoryBound with the exit status of
+// its kind (2 for bad input, 1 for the environment) and exactly one line on stderr, and leave the
+// folder as it was: no output, no temporary file, and an output that was there untouched.
+
+#include <gtest/gtest.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "LancerRun.h"
+
+namespace lancer::test {
+namespace {
+
+// A bad input is refused before any work, in well under a second here; 10 s leaves room for
+// AddressSanitizer on a loaded machine, and is far below what the inputs that once got through
+// took (a scene of 2^30 samples a pixel ran for hours).
+constexpr std::chrono::seconds kTimeBound{10};
+// lancer refusing a bad input peaks at about 16 MB of resident memory (about 60 under
+// AddressSanitizer); the inputs that once got through claimed gigabytes (a 233-byte BMP 9.45 GB,
+// /dev/zero as a radiosity file 23 GB before it was killed).
+constexpr long kMemoryBoundKilobytes = 512 * 1024;
+
+const std::string kCorpus = std::string(LANCER_SOURCE_DIR) + "/tests/fuzz/corpus/";
+
+// A valid scene with `render`'s keys added to its "render" block, `diffuse` as its material's
+// diffuse colour and `object` added to its objects.
+std::string scene(const std::string& render = "", const std::string& diffuse = "0.5",
+                  const std::string& object = "") {
+    return R"({ "render": { "width": 8, "height": 6, "spp": 1)" + render + R"( },
+  "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] },
+  "materials": { "m": { "diffuse": )" +
+           diffuse + R"( } },
+  "objects": [ { "type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m" })" +
+           object + R"( ],
+  "lights": [ { "type": "point", "position": [2, 5, 3], "intensity": 40 } ] })";
+}
+// The scene without its "spp" (which "max_spp" may not be given with).
+std::string withoutSamples(std::string text) {
+    const std::string samples = R"(, "spp": 1)";
+    return text.erase(text.find(samples), samples.size());
+}
+std::string texturedScene(const std::string& file) {
+    return scene("", R"({ "texture": ")" + file + R"(" })");
+}
+std::string meshScene(const std::string& file) {
+    return scene("", "0.5", R"(, { "type": "mesh", "file": ")" + file + R"(" })");
+}
+const std::string kRadiosityScene = scene(R"(, "integrator": "radiosity")");
+
+struct BadInput {
+    std::string name;
+    std::string sceneText;  // written as scene.json
+    std::vector<std::string> arguments;
+    std::string says;  // a fragment of the one line on stderr
+    int exitStatus = 2;
+    // Further files: name and text, or "corpus:PATH" for a file of tests/fuzz/corpus; a name
+    // ending in '/' is a folder.
+    std::vector<std::pair<std::string, std::string>> files{};
+};
+
+std::ostream& operator<<(std::ostream& out, const BadInput& c) {
+    return out << c.name;
+}
+
+const std::vector<std::string> kRender = {"scene.json", "-o", "out.png"};
+
+std::vector<std::string> render(std::vector<std::string> options) {
+    std::vector<std::string> arguments = kRender;
+    arguments.insert(arguments.end(), options.begin(), options.end());
+    return arguments;
+}
+
+const std::string kGarbage("\x89PNG\r\n\x1a\n\0\0\0\rIHDR\xff\xff\xff\xff", 20);
+
+const BadInput kBadInputs[] = {
+    // --- the scene file ---
+    {"SceneEmpty", "", kRender, "scene.json:1:1: error: "},
+    {"SceneNotJson", "hello", kRender, "scene.json:1:1: error: "},
+    {"SceneBinary", kGarbage, kRender, "scene.json:1:1: error: "},
+    {"SceneUtf16", std::string("\xff\xfe{\0}\0", 6), kRender, "scene.json:1:1: error: "},
+    {"SceneTruncated", scene().substr(0, 100), kRender, "scene.json:"},
+    {"SceneTrailingComma", scene().substr(0, scene().size() - 2) + ", }", kRender, "scene.json:"},
+    {"SceneNestedTooDeep", std::string(100000, '['), kRender, "nested more than 256 deep"},
+    {"SceneNumberOverflow", scene(R"(, "max_depth": 1e999)"), kRender, "number overflow"},
+    {"SceneIsMissing", "", {"missing.json", "-o", "out.png"}, "missing.json: error: "},
+    {"SceneIsAFolder", "", {"folder", "-o", "out.png"}, "is a folder", 2, {{"folder/", ""}}},
+    {"SceneIsADevice", "", {"/dev/zero", "-o", "out.png"}, "is a device"},
+    {"WidthHuge", scene(R"(, "width": 1000000000)"), kRender, R"("width" must be at most 32768)"},
+    {"HeightZero", scene(R"(, "height": 0)"), kRender, R"("height")"},
+    {"SamplesHuge", scene(R"(, "spp": 1000000000)"), kRender, R"("spp" must be at most 1048576)"},
+    {"AdaptiveSamplesHuge", withoutSamples(scene(R"(, "adaptive": { "max_spp": 2000000 })")),
+     kRender, R"("max_spp" must be at most 1048576)"},
+    {"DepthHuge", scene(R"(, "max_depth": 30000)"), kRender, R"("max_depth" must be at most 1024)"},
+    {"NegativeRadius", scene("", "0.5", R"(, { "type": "sphere", "radius": -1 })"), kRender,
+     R"("radius")"},
+    {"UnknownObjectType", scene("", "0.5", R"(, { "type": "prism" })"), kRender, "prism"},
+    {"UndefinedMaterial", scene("", "0.5", R"(, { "type": "sphere", "material": "x" })"), kRender,
+     R"(material "x" is not defined)"},
+    {"NumberAsText", scene(R"(, "max_depth": "nan")"), kRender, R"("max_depth")"},
+    // --- models ---
+    {"MeshMissing", meshScene("missing.obj"), kRender, "cannot open the OBJ file"},
+    {"MeshIsADevice", meshScene("/dev/zero"), kRender, "is a device, not an OBJ file"},
+    {"MeshIsAFolder", meshScene("."), kRender, "is a folder, not an OBJ file"},
+    {"MeshBinary", meshScene("model.obj"), kRender, "no faces", 2, {{"model.obj", kGarbage}}},
+    {"MeshEmpty", meshScene("model.obj"), kRender, "no faces", 2, {{"model.obj", ""}}},
+    {"MeshIndicesOutOfRange",
+     meshScene("model.obj"),
+     kRender,
+     "can be rendered",
+     2,
+     {{"model.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\nf -7 1 2\n"}}},
+    {"MeshIndexZero",
+     meshScene("model.obj"),
+     kRender,
+     "index 0",
+     2,
+     {{"model.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"}}},
+    {"MeshCoordinatesOverflow",
+     meshScene("model.obj"),
+     kRender,
+     "can be rendered",
+     2,
+     {{"model.obj", "v 1e999 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n"}}},
+    {"MaterialLibraryIsADevice",
+     meshScene("model.obj"),
+     kRender,
+     "is a device, not an MTL file",
+     2,
+     {{"model.obj", "mtllib /dev/zero\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}}},
+    // --- textures ---
+    {"TextureMissing", texturedScene("missing.png"), kRender, "cannot open the image"},
+    {"TextureIsADevice", texturedScene("/dev/zero"), kRender, "cannot read the image"},
+    {"TextureIsAFolder", texturedScene("."), kRender, "a folder, not a file"},
+    {"TextureIsText",
+     texturedScene("t.png"),
+     kRender,
+     "corrupt or truncated PNG",
+     2,
+     {{"t.png", "not an image\n"}}},
+    {"TextureEmpty", texturedScene("t.png"), kRender, "cannot read the image", 2, {{"t.png", ""}}},
+    {"TextureTruncatedBmp",
+     texturedScene("t.bmp"),
+     kRender,
+     "corrupt or truncated BMP",
+     2,
+     {{"t.bmp", "corpus:image/truncated.bmp"}}},
+    {"TextureBmpClaimingHugeSize",
+     texturedScene("t.bmp"),
+     kRender,
+     "cannot read the image",
+     2,
+     {{"t.bmp", "corpus:image/huge-declared.bmp"}}},
+    {"TexturePngClaimingHugeSize",
+     texturedScene("t.png"),
+     kRender,
+     "30000 x 30000 pixels",
+     2,
+     {{"t.png", "corpus:image/huge-declared.png"}}},
+    {"TexturePfmClaimingHugeSize",
+     texturedScene("t.pfm"),
+     kRender,
+     "100000 x 100000 pixels",
+     2,
+     {{"t.pfm", "corpus:image/huge-declared.pfm"}}},
+    // Found by fuzz_image: 60 bytes declaring 10000 x 10000 pixels took 1.2 GB and 10 s.
+    {"TexturePfmShortOfItsPixels",
+     texturedScene("t.pfm"),
+     kRender,
+     "corrupt or truncated PFM",
+     2,
+     {{"t.pfm", "corpus:image/pfm-short-of-its-pixels.pfm"}}},
+    {"TextureTgaClaimingHugeSize",
+     texturedScene("t.tga"),
+     kRender,
+     "cannot read the image",
+     2,
+     {{"t.tga", "corpus:image/huge-declared.tga"}}},
+    // --- options ---
+    {"NoScene", scene(), {"-o", "out.png"}, "lancer: error: "},
+    {"UnknownOption", scene(), render({"--sample", "4"}), "--sample"},
+    {"WidthOptionZero", scene(), render({"--width", "0"}), "--width"},
+    {"WidthOptionHuge", scene(), render({"--width", "40000"}), "--width"},
+    {"SamplesOptionZero", scene(), render({"--spp", "0"}), "--spp"},
+    {"SamplesOptionHuge", scene(), render({"--spp", "2000000"}), "--spp"},
+    {"SamplesOptionText", scene(), render({"--spp", "many"}), "--spp"},
+    {"DepthOptionHuge", scene(), render({"--max-depth", "2000"}), "--max-depth"},
+    {"ThreadsNegative", scene(), render({"--threads", "-1"}), "--threads"},
+    {"SeedNegative", scene(), render({"--seed", "-1"}), "--seed"},
+    {"CropOutside", scene(), render({"--crop", "0,0,100,100"}), "--crop"},
+    {"CropText", scene(), render({"--crop", "a,b,c,d"}), "--crop"},
+    {"UnknownIntegrator", scene(), render({"--integrator", "whited"}), "whitted"},
+    {"UnknownOutputFormat", scene(), {"scene.json", "-o", "out.pgn"}, "unknown output format"},
+    {"MaxMemoryText", scene(), render({"--max-memory", "lots"}), "--max-memory"},
+    {"MaxMemoryTooSmall", scene(), render({"--max-memory", "100"}), "--max-memory allows"},
+    // --- radiosity files ---
+    {"RadiosityMissing", kRadiosityScene, render({"--load-radiosity", "missing.rad"}),
+     "cannot open the radiosity file"},
+    {"RadiosityIsADevice", kRadiosityScene, render({"--load-radiosity", "/dev/zero"}),
+     "is a device, not a radiosity file"},
+    {"RadiosityIsAFolder", kRadiosityScene, render({"--load-radiosity", "."}),
+     "is a folder, not a radiosity file"},
+    {"RadiosityNotASolution", kRadiosityScene, render({"--load-radiosity", "scene.json"}),
+     "not a lancer radiosity file"},
+    {"RadiosityTruncated",
+     kRadiosityScene,
+     render({"--load-radiosity", "s.rad"}),
+     "truncated",
+     2,
+     {{"s.rad", "corpus:radiosity/truncated.rad"}}},
+    {"RadiosityOfAnotherScene",
+     kRadiosityScene,
+     render({"--load-radiosity", "s.rad"}),
+     "another scene",
+     2,
+     {{"s.rad", "corpus:radiosity/two-triangles.rad"}}},
+    {"RadiosityWithoutItsIntegrator",
+     scene(),
+     render({"--load-radiosity", "s.rad"}),
+     "need --integrator radiosity",
+     2,
+     {{"s.rad", "corpus:radiosity/two-triangles.rad"}}},
+    // --- the environment ---
+    {"OutputInAMissingFolder",
+     scene(),
+     {"scene.json", "-o", "missing/out.png"},
+     "cannot write the image",
+     1},
+};
+
+// The folder's entries and out.png's bytes, to compare before and after.
+struct FolderState {
+    std::vector<std::string> entries;
+    std::string output;
+    bool operator==(const FolderState&) const = default;
+};
+
+FolderState stateOf(const TempFolder& folder) {
+    const bool hasOutput = fs::exists(folder / "out.png");
+    return {folder.entries(), hasOutput ? readFile(folder / "out.png") : std::string()};
+}
+
+class CliBadInput : public testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, IsOneLineAndTheRightStatusWithinBoundsAndWritesNothing) {
+    const BadInput& c = GetParam();
+    // Without an output, then with one already there (which must stay as it is).
+    for (const bool outputExists : {false, true}) {
+        SCOPED_TRACE(outputExists ? "with an existing output" : "without an output");
+        const TempFolder folder;
+        folder.write("scene.json", c.sceneText);
+        for (const auto& [name, content] : c.files) {
+            if (name.back() == '/')
+                fs::create_directory(folder / name);
+            else if (content.rfind("corpus:", 0) == 0)
+                fs::copy_file(kCorpus + content.substr(7), folder / name);
+            else
+                folder.write(name, content);
+        }
+        if (outputExists) folder.write("out.png", "the image of an earlier render");
+        const FolderState before = stateOf(folder);
+
+        const RunResult run = runLancer(c.arguments, folder.path(), kTimeBound);
+        EXPECT_FALSE(run.timedOut) << run;
+        EXPECT_EQ(run.exitStatus, c.exitStatus) << run;
+        const std::vector<std::string> lines = run.errorLines();
+        ASSERT_EQ(lines.size(), 1u) << run;
+        EXPECT_NE(lines[0].find(" error: "), std::string::npos) << lines[0];
+        EXPECT_NE(lines[0].find(c.says), std::string::npos) << lines[0];
+        EXPECT_LE(run.peakMemoryKilobytes, kMemoryBoundKilobytes) << run;
+        EXPECT_TRUE(stateOf(folder) == before) << "the folder changed";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, CliBadInput, testing::ValuesIn(kBadInputs), CaseName());
+
+}  // namespace
+}  // namespace lancer::test
