@@ -12,8 +12,16 @@
 //   emissiveFactor (x emissiveStrength)  emission; an emissiveTexture contributes its mean colour,
 //                                        since emission is uniform over a material
 //   normalTexture                        normal_map (tangent space, linear; its scale is ignored)
-//   metallic, roughness                  not yet: no metal or rough material exists (a warning)
-// A material-less primitive gets glTF's default: white, diffuse.
+//   metallicFactor m, roughnessFactor r  glTF's BRDF is mix(dielectric, metal, m), so ours is too:
+//                                        diffuse (1 - m) x base colour, reflection m of a
+//                                        conductor reflecting the base colour head-on
+//                                        (conductorReflecting), roughness r^2 (GGX alpha). The
+//                                        dielectric's specular layer (F0 = 0.04) is not drawn.
+//   metallicRoughnessTexture             its mean blue (metallic) and green (roughness) times the
+//                                        factors, since both are uniform over a material
+//   base colour texture of a metal       the conductor's tint is its mean colour; the diffuse
+//                                        part keeps the texels
+// A material-less primitive gets glTF's default: white, metallic 1, roughness 1.
 
 #include "io/GltfLoader.h"
 
@@ -25,6 +33,7 @@
 #endif
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -40,6 +49,7 @@
 #include "materials/ImageTexture.h"
 #include "materials/MipMap.h"
 #include "materials/NormalMap.h"
+#include "materials/Optics.h"
 #include "math/Srgb.h"
 #include "math/Transform.h"
 #include "scene/InputError.h"
@@ -75,6 +85,15 @@ Color colorOf(const std::vector<double>& factor, const Color& absent) {
     if (factor.size() < 3) return absent;
     return {static_cast<float>(factor[0]), static_cast<float>(factor[1]),
             static_cast<float>(factor[2])};
+}
+
+// The mean of an image's texels, for what a material holds uniform.
+Color meanColor(const Image& image) {
+    Color sum;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x)
+            sum += image.at(x, y);
+    return sum / static_cast<float>(image.width() * image.height());
 }
 
 // The node's own transform: its matrix (column-major), or translation * rotation * scale.
@@ -385,13 +404,39 @@ std::uint32_t GltfReader::materialOf(int index) {
 std::shared_ptr<const Material> GltfReader::convert(const tinygltf::Material& material) {
     const tinygltf::PbrMetallicRoughness& pbr = material.pbrMetallicRoughness;
     BlinnPhongMaterial::Parameters ours;
+    // glTF requires both factors in [0, 1]; a file beyond that is taken at the nearest bound.
+    float metallic = std::clamp(static_cast<float>(pbr.metallicFactor), 0.0f, 1.0f);
+    float roughness = std::clamp(static_cast<float>(pbr.roughnessFactor), 0.0f, 1.0f);
+    if (const auto image = texels(pbr.metallicRoughnessTexture.index, Color(1), false)) {
+        warnOnce("metallicRoughnessTexture",
+                 "metallic-roughness textures are drawn as their mean metallic and roughness "
+                 "(both are uniform over a material)");
+        const Color mean = meanColor(*image);
+        roughness *= mean.g;
+        metallic *= mean.b;
+    }
+
     const Color base = colorOf(pbr.baseColorFactor, Color(1));
-    if (const auto image = texels(pbr.baseColorTexture.index, base, true))
+    const float dielectric = 1 - metallic;
+    if (const auto image =
+            dielectric > 0 ? texels(pbr.baseColorTexture.index, base * dielectric, true) : nullptr)
         ours.diffuse = std::make_shared<ImageTexture>(std::make_shared<MipMap>(*image));
     else
-        ours.diffuse = std::make_shared<ConstantTexture>(base);
+        ours.diffuse = std::make_shared<ConstantTexture>(base * dielectric);
     ours.ambient = ours.diffuse;
     ours.specular = Color(0);
+    if (metallic > 0) {
+        Color tint = base;
+        if (const auto image = texels(pbr.baseColorTexture.index, base, true)) {
+            warnOnce("metallicTexture",
+                     "base colour textures tint metals by their mean colour "
+                     "(a conductor is uniform over a material)");
+            tint = meanColor(*image);
+        }
+        ours.reflection = Color(metallic);
+        ours.conductor = conductorReflecting(tint);
+        ours.roughness = roughness * roughness;
+    }
 
     Color emission = colorOf(material.emissiveFactor, Color(0));
     if (const auto it = material.extensions.find(kEmissiveStrength);
@@ -402,20 +447,11 @@ std::shared_ptr<const Material> GltfReader::convert(const tinygltf::Material& ma
             warnOnce("emissiveTexture",
                      "emissive textures are drawn as their mean colour "
                      "(emission is uniform over a material)");
-            Color sum;
-            for (int y = 0; y < image->height(); ++y)
-                for (int x = 0; x < image->width(); ++x)
-                    sum += image->at(x, y);
-            emission = sum / static_cast<float>(image->width() * image->height());
+            emission = meanColor(*image);
         }
     }
     ours.emission = emission;
 
-    if (pbr.metallicFactor > 0 || pbr.roughnessFactor < 1 ||
-        pbr.metallicRoughnessTexture.index >= 0)
-        warnOnce("metallic",
-                 "metallic and roughness are not supported yet: base colours are "
-                 "drawn as diffuse");
     auto converted = std::make_shared<BlinnPhongMaterial>(std::move(ours));
     if (const auto image = texels(material.normalTexture.index, Color(1), false)) {
         if (material.normalTexture.scale != 1)

@@ -71,4 +71,20 @@ inline Color fresnelConductor(float cosThetaI, const ConductorIor& ior) {
             fresnelConductor(cosThetaI, ior.eta.b, ior.k.b)};
 }
 
+// A conductor that reflects `normalReflectance` (each channel in [0, 1]) at normal incidence, for
+// materials given by their colour (glTF's metals): eta = 1 and k = 2 sqrt(F0 / (1 - F0)), which
+// solves ((eta - 1)^2 + k^2) / ((eta + 1)^2 + k^2) = F0. Of the one-parameter choices it follows
+// Schlick's curve, which glTF's metals are defined by, closer than k = 0 does for metals' F0 of
+// 0.5 and more (the mean |difference| weighted by cos theta: 0.006 against 0.038 at F0 = 0.5,
+// 0.016 against 0.026 at 0.9; k = 0 dips far below it towards grazing). F0 is held below 1,
+// which no finite index reaches: k at most 200.
+inline ConductorIor conductorReflecting(const Color& normalReflectance) {
+    const auto k = [](float f0) {
+        const float clamped = std::clamp(f0, 0.0f, 0.9999f);
+        return 2 * std::sqrt(clamped / (1 - clamped));
+    };
+    return {Color(1),
+            Color(k(normalReflectance.r), k(normalReflectance.g), k(normalReflectance.b))};
+}
+
 }  // namespace lancer

@@ -1,8 +1,8 @@
-// The environment light end to end: a map with one bright texel is seen in the direction the
-// contract's mapping says (and turned by "rotate"); a Lambertian floor (an infinite plane: rays
-// that miss it leave the scene) under a map shows kd E / pi in `path` and `radiosity` and kd E in
-// `whitted`, E integrated numerically from the same map; a white sphere under a constant map is
-// as bright as the map (a white furnace), as under the same `background`.
+// The environment light end to end: a map with one bright texel (PFM or EXR) is seen in the
+// direction the contract's mapping says (and turned by "rotate"); a Lambertian floor (an infinite
+// plane: rays that miss it leave the scene) under a map shows kd E / pi in `path` and `radiosity`
+// and kd E in `whitted`, E integrated numerically from the same map; a white sphere under a
+// constant map is as bright as the map (a white furnace), as under the same `background`.
 
 #include <gtest/gtest.h>
 
@@ -14,6 +14,7 @@
 #include "LancerRun.h"
 #include "PfmFile.h"
 #include "TempFolder.h"
+#include "io/ImageWriter.h"
 
 namespace lancer::test {
 namespace {
@@ -46,26 +47,30 @@ double centreGreen(const json& scene) {
     return renderScene(scene).image.at(1, 1)[1];
 }
 
+// The map as a PFM and as an OpenEXR file (written by the program's own ImageWriter, as 32-bit
+// float, which holds the texels exactly): the same texel is seen in the same direction.
 TEST(CliEnvironment, OneBrightTexelIsSeenWhereTheMappingSaysAndTurnedByRotate) {
     const TempFolder folder;
     constexpr int kW = 16, kH = 8;
     lancer::Image map(kW, kH, Color(0));
     map.at(11, 3) = Color(5, 6, 7);  // just left of +x, a little above the horizon
     writePfm(map, folder / "map.pfm");
+    ImageWriter::write(map, folder / "map.exr");
     const Vec3d d = texelDirection(11, 3, kW, kH);
-    for (const std::string integrator : {"whitted", "path"}) {
-        SCOPED_TRACE(integrator);
-        // Exactly at the texel's centre the bilinear lookup is the texel: 6, times intensity 2.
-        EXPECT_NEAR(centreGreen(lookingAlong(d, folder / "map.pfm", integrator)), 12, 1e-3);
-        EXPECT_EQ(centreGreen(lookingAlong(-1.0 * d, folder / "map.pfm", integrator)), 0);
-        // Turned 90 degrees counter-clockwise seen from above, (x, y, z) goes to (z, y, -x).
-        json turned = lookingAlong({d.z, d.y, -d.x}, folder / "map.pfm", integrator);
-        turned["environment"]["rotate"] = 90;
-        EXPECT_NEAR(centreGreen(turned), 12, 1e-3);
-        json unturned = lookingAlong(d, folder / "map.pfm", integrator);
-        unturned["environment"]["rotate"] = 90;
-        EXPECT_EQ(centreGreen(unturned), 0);
-    }
+    for (const char* file : {"map.pfm", "map.exr"})
+        for (const std::string integrator : {"whitted", "path"}) {
+            SCOPED_TRACE(integrator + " " + file);
+            // Exactly at the texel's centre the bilinear lookup is the texel: 6, times intensity 2.
+            EXPECT_NEAR(centreGreen(lookingAlong(d, folder / file, integrator)), 12, 1e-3);
+            EXPECT_EQ(centreGreen(lookingAlong(-1.0 * d, folder / file, integrator)), 0);
+            // Turned 90 degrees counter-clockwise seen from above, (x, y, z) goes to (z, y, -x).
+            json turned = lookingAlong({d.z, d.y, -d.x}, folder / file, integrator);
+            turned["environment"]["rotate"] = 90;
+            EXPECT_NEAR(centreGreen(turned), 12, 1e-3);
+            json unturned = lookingAlong(d, folder / file, integrator);
+            unturned["environment"]["rotate"] = 90;
+            EXPECT_EQ(centreGreen(unturned), 0);
+        }
 }
 
 // An 8-bit map holds sRGB-encoded colour: a binary PPM whose every texel is 128 is seen as

@@ -1,6 +1,7 @@
 // glTF models end to end: the sample model written as OBJ, .gltf and .glb renders the same image;
-// a scene material overrides the model's; what lancer cannot show is a warning and the render
-// goes on; a malformed file is one error line and exit status 2.
+// a scene material overrides the model's; metallic-roughness renders as the scene's conductor and
+// roughness; what lancer cannot show is a warning and the render goes on; a malformed file is one
+// error line and exit status 2.
 
 #include <gtest/gtest.h>
 
@@ -51,6 +52,66 @@ TEST(CliGltf, SceneMaterialOverridesTheModels) {
     const Image red = renderScene(spotScene(gltf)).image;
     EXPECT_LE(maxAbsoluteDifference(red, renderScene(spotScene(obj)).image), kSameImage);
     EXPECT_GT(maxAbsoluteDifference(red, textured), 0.1);
+}
+
+// Spot's .gltf copied into `folder` with its material's pbrMetallicRoughness replaced, as a
+// "gltf" object.
+json spotWithPbr(const TempFolder& folder, const json& pbr) {
+    for (const char* file : {"spot.bin", "spot_texture.png"})
+        fs::copy_file(kSpot / file, folder / file);
+    json model = json::parse(readFile(kSpot / "spot.gltf"));
+    model["materials"][0]["pbrMetallicRoughness"] = pbr;
+    folder.write("spot.gltf", model.dump());
+    return {{"type", "gltf"}, {"file", (folder / "spot.gltf").string()}};
+}
+
+// Spot under a sky of one colour above a grey floor, for a mirror to show something.
+json spotUnderSky(const json& object) {
+    json scene = spotScene(object);
+    scene["background"] = {0.55, 0.7, 0.9};
+    scene["objects"].push_back({{"type", "plane"}, {"point", {0, -0.5, 0}}, {"normal", {0, 1, 0}}});
+    return scene;
+}
+
+// The same with Spot's OBJ made of a scene material.
+json objSpotUnderSky(const json& material) {
+    json object = objSpot();
+    object["material"] = "model";
+    json scene = spotUnderSky(object);
+    scene["materials"]["model"] = material;
+    return scene;
+}
+
+// The base colour (0.8, 0.5, 0.2) is the head-on reflectance of eta = 1, k = 2 sqrt(F0 / (1 - F0))
+// = (4, 2, 1): a metallic glTF renders as that scene conductor, roughnessFactor r as the scene's
+// roughness r^2. The k of the glTF's factors are (4, 2, 1) within float rounding (1e-7), which
+// moves the Fresnel term by less than kSameImage.
+TEST(CliGltf, MetallicRendersAsTheSceneConductorAndRoughnessIsSquared) {
+    const json conductor = {{"eta", 1}, {"k", {4, 2, 1}}};
+    for (const float roughness : {0.0f, 0.5f}) {
+        const TempFolder folder;
+        const json gltf = spotWithPbr(folder, {{"baseColorFactor", {0.8, 0.5, 0.2, 1}},
+                                               {"metallicFactor", 1},
+                                               {"roughnessFactor", roughness}});
+        const Image fromGltf = renderScene(spotUnderSky(gltf)).image;
+        const Image fromScene = renderScene(objSpotUnderSky({{"conductor", conductor},
+                                                             {"roughness", roughness * roughness}}))
+                                    .image;
+        EXPECT_LE(maxAbsoluteDifference(fromGltf, fromScene), kSameImage) << roughness;
+        // Not the same image for any material: a diffuse Spot differs.
+        const Image diffuse = renderScene(objSpotUnderSky({{"diffuse", 0.8}})).image;
+        EXPECT_GT(maxAbsoluteDifference(fromGltf, diffuse), 0.1) << roughness;
+    }
+}
+
+// A dielectric (metallic 0) is its base colour as a diffuse material, whatever its roughness.
+TEST(CliGltf, DielectricRendersAsTheDiffuseBaseColour) {
+    const TempFolder folder;
+    const json gltf = spotWithPbr(
+        folder,
+        {{"baseColorFactor", {0.8, 0.5, 0.2, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.5}});
+    const Image diffuse = renderScene(objSpotUnderSky({{"diffuse", {0.8, 0.5, 0.2}}})).image;
+    EXPECT_LE(maxAbsoluteDifference(renderScene(spotUnderSky(gltf)).image, diffuse), kSameImage);
 }
 
 TEST(CliGltf, UnsupportedFeaturesWarnAndTheRenderGoesOn) {

@@ -10,6 +10,7 @@
 
 #include "MeshTestSupport.h"
 #include "io/GltfLoader.h"
+#include "materials/Optics.h"
 #include "scene/InputError.h"
 
 namespace lancer::test {
@@ -113,6 +114,13 @@ protected:
         LoadedObj loaded;
         loaded.mesh = GltfLoader::load(folder_.write("model.gltf", doc.text()), loaded.warnings);
         return loaded;
+    }
+    // A triangle of one material of these pbrMetallicRoughness keys.
+    LoadedObj loadPbr(const json& pbr) {
+        GltfDocument doc;
+        doc.json_()["materials"] = {{{"pbrMetallicRoughness", pbr}}};
+        doc.addRoot(doc.node({{"mesh", doc.unitTriangle(0)}}));
+        return load(doc);
     }
     std::string failure(const std::string& text) {
         std::vector<std::string> warnings;
@@ -230,14 +238,88 @@ TEST_F(GltfTest, BaseColourIsTheDiffuseAndEmissionIsScaledByItsStrength) {
     EXPECT_EQ(m.specular, Color(0));
 }
 
-// glTF's default material: white, metallic 1, which lancer cannot draw as a metal yet.
-TEST_F(GltfTest, PrimitiveWithoutMaterialIsWhiteWithTheMetallicWarning) {
+// glTF's default material: white, metallic 1, roughness 1: a white conductor of GGX alpha 1.
+TEST_F(GltfTest, PrimitiveWithoutMaterialIsARoughWhiteMetal) {
     GltfDocument doc;
     doc.addRoot(doc.node({{"mesh", doc.unitTriangle()}}));
     const LoadedObj loaded = load(doc);
-    EXPECT_EQ(colorOf(*materialOf(*loaded.mesh, 0).diffuse), Color(1));
-    ASSERT_EQ(loaded.warnings.size(), 1u);
-    EXPECT_EQ(countContaining(loaded.warnings, "metallic and roughness are not supported"), 1u);
+    const BlinnPhongMaterial::Parameters& m = materialOf(*loaded.mesh, 0);
+    EXPECT_EQ(colorOf(*m.diffuse), Color(0));
+    EXPECT_EQ(m.reflection, Color(1));
+    ASSERT_TRUE(m.conductor.has_value());
+    EXPECT_EQ(m.conductor->k, conductorReflecting(Color(1)).k);
+    EXPECT_EQ(m.roughness, 1.0f);
+    EXPECT_TRUE(loaded.warnings.empty());
+}
+
+// glTF's BRDF mix(dielectric, metal, metallic) as ours: the diffuse weighted by 1 - metallic, the
+// conductor (reflecting the base colour head-on) by metallic, roughness squared to GGX alpha.
+TEST_F(GltfTest, MetallicWeighsAConductorOfTheBaseColourAndRoughnessIsSquared) {
+    const LoadedObj loaded = loadPbr({{"baseColorFactor", {0.8, 0.5, 0.2, 1}},
+                                      {"metallicFactor", 0.25},
+                                      {"roughnessFactor", 0.5}});
+    EXPECT_TRUE(loaded.warnings.empty());
+    const BlinnPhongMaterial::Parameters& m = materialOf(*loaded.mesh, 0);
+    EXPECT_EQ(colorOf(*m.diffuse), Color(0.8f, 0.5f, 0.2f) * 0.75f);
+    EXPECT_EQ(colorOf(*m.ambient), colorOf(*m.diffuse));
+    EXPECT_EQ(m.reflection, Color(0.25f));
+    ASSERT_TRUE(m.conductor.has_value());
+    EXPECT_EQ(m.conductor->eta, Color(1));
+    EXPECT_EQ(m.conductor->k, conductorReflecting(Color(0.8f, 0.5f, 0.2f)).k);
+    EXPECT_EQ(m.roughness, 0.25f);
+}
+
+// A dielectric (metallic 0) is the diffuse base colour as before: no conductor, and its
+// roughness has no lobe to act on (the specular layer of glTF's dielectric is not drawn).
+TEST_F(GltfTest, DielectricIsDiffuseWithoutAConductor) {
+    const LoadedObj loaded = loadPbr(
+        {{"baseColorFactor", {0.8, 0.5, 0.2, 1}}, {"metallicFactor", 0}, {"roughnessFactor", 0.5}});
+    EXPECT_TRUE(loaded.warnings.empty());
+    const BlinnPhongMaterial::Parameters& m = materialOf(*loaded.mesh, 0);
+    EXPECT_EQ(colorOf(*m.diffuse), Color(0.8f, 0.5f, 0.2f));
+    EXPECT_EQ(m.reflection, Color(0));
+    EXPECT_FALSE(m.conductor.has_value());
+    EXPECT_EQ(m.roughness, 0.0f);
+}
+
+// A 2x1 PNG of the texels (0, 255, 255) and (0, 0, 0): mean (0, 0.5, 0.5) read linear or as sRGB.
+const char* const kHalfPng =
+    "data:image/png;base64,"
+    "iVBORw0KGgoAAAANSUhEUgAAAAIAAAABCAIAAAB7QOjdAAAAD0lEQVR4nGNg+P+fgYEBAAj+"
+    "Af9QVHg0AAAAAElFTkSuQmCC";
+
+// Per-texel metallic, roughness and metal tints are not supported: their means stand in (the
+// factors times the texture's mean blue and green; the base colour's mean), one warning each.
+TEST_F(GltfTest, MetallicRoughnessAndMetalTexturesAreTheirMeansWithAWarningEach) {
+    GltfDocument doc;
+    doc.json_()["images"] = {{{"uri", kHalfPng}}};
+    doc.json_()["textures"] = {{{"source", 0}}};
+    doc.json_()["materials"] = {
+        {{"pbrMetallicRoughness",
+          {{"baseColorTexture", {{"index", 0}}}, {"metallicRoughnessTexture", {{"index", 0}}}}}},
+        {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    doc.addRoot(doc.node({{"mesh", doc.unitTriangle(0)}}));
+    doc.addRoot(doc.node({{"mesh", doc.unitTriangle(1)}}));
+    const LoadedObj loaded = load(doc);
+    EXPECT_EQ(
+        countContaining(loaded.warnings, "metallic-roughness textures are drawn as their mean"),
+        1u);
+    EXPECT_EQ(countContaining(loaded.warnings, "base colour textures tint metals by their mean"),
+              1u);
+    EXPECT_EQ(loaded.warnings.size(), 2u);
+    const BlinnPhongMaterial::Parameters& half = materialOf(*loaded.mesh, 0);
+    EXPECT_EQ(half.reflection, Color(0.5f));  // metallic 1 x mean blue 0.5
+    EXPECT_EQ(half.roughness, 0.25f);         // (1 x mean green 0.5)^2
+    // The base colour's texels are decoded from sRGB: 1 within a float's rounding, which moves
+    // k = 2 sqrt(F0 / (1 - F0)) by at most 4 per unit of F0 at F0 = 0.5.
+    constexpr float kSrgbRounding = 1e-5f;
+    EXPECT_COLOR_NEAR(half.conductor->k, conductorReflecting(Color(0, 0.5f, 0.5f)).k,
+                      kSrgbRounding);
+    const BlinnPhongMaterial::Parameters& metal = materialOf(*loaded.mesh, 1);
+    EXPECT_EQ(metal.reflection, Color(1));
+    EXPECT_EQ(colorOf(*metal.diffuse), Color(0));
+    EXPECT_COLOR_NEAR(metal.conductor->k, conductorReflecting(Color(0, 0.5f, 0.5f)).k,
+                      kSrgbRounding);
 }
 
 // What lancer cannot show is one warning each, never an error: the geometry is still drawn.

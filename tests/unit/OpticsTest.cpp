@@ -1,4 +1,5 @@
-// Mirror reflection, Snell refraction and the dielectric Fresnel term.
+// Mirror reflection, Snell refraction, the dielectric Fresnel term and conductors made from
+// colours.
 
 #include <gtest/gtest.h>
 
@@ -163,6 +164,24 @@ TEST(OpticsTest, IndexOneChangesNothing) {
         ASSERT_TRUE(t.has_value()) << "cos " << wi.y;
         EXPECT_VEC3_NEAR(*t, -wi, kTolerance);
     }
+}
+
+// A conductor made from a colour reflects that colour head-on, rises to 1 at grazing, and stays
+// finite for white (held at F0 = 0.9999). The tolerance is kTolerance's: a few float square roots.
+TEST(OpticsTest, ConductorReflectingAColourReflectsItAtNormalIncidence) {
+    for (float f0 : {0.0f, 0.04f, 0.2f, 0.5f, 0.8f, 0.95f}) {
+        const ConductorIor ior = conductorReflecting(Color(f0));
+        EXPECT_EQ(ior.eta, Color(1));
+        EXPECT_NEAR(fresnelConductor(1, ior).g, f0, kTolerance) << f0;
+        if (f0 > 0) {
+            EXPECT_NEAR(fresnelConductor(1e-4f, ior).g, 1, 1e-3f) << f0;  // 1 - O(cos)
+        }
+    }
+    EXPECT_NEAR(conductorReflecting(Color(0.8f, 0.5f, 0.2f)).k.r, 4, kTolerance);
+    const ConductorIor white = conductorReflecting(Color(1));
+    // 1 - 0.9999f is 1.0002e-4 in float (0.9999 is not exact): k = 199.97.
+    EXPECT_NEAR(white.k.r, 200, 0.05f);
+    EXPECT_NEAR(fresnelConductor(1, white).r, 0.9999f, kTolerance);
 }
 
 }  // namespace
