@@ -412,7 +412,7 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
     checkKeys(node, "\"render\"",
               {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive",
-               "exposure", "tonemap"});
+               "exposure", "tonemap", "clamp"});
     RenderSettings& settings = scene_.settings();
     if (node.has("width"))
         settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
@@ -437,6 +437,7 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     }
     if (node.has("tonemap"))
         settings.tonemap = lookUp(ToneMapper::operators(), node["tonemap"], "tonemap").name;
+    if (node.has("clamp")) settings.sampleClamp = readNumberAtLeast(node["clamp"], 0, false);
 }
 
 void SceneLoader::Reader::loadFilter(const Node& node) {
