@@ -17,6 +17,7 @@
 #include "geometry/Instance.h"
 #include "geometry/Plane.h"
 #include "geometry/Quad.h"
+#include "geometry/SmoothingByAngle.h"
 #include "geometry/Sphere.h"
 #include "geometry/Torus.h"
 #include "geometry/Triangle.h"
@@ -163,8 +164,10 @@ private:
                                    const std::optional<Transform>& transform);
     static std::unique_ptr<Shape> placed(std::unique_ptr<Shape> shape,
                                          const std::optional<Transform>& transform);
+    // `smooth`: the threshold angle of SmoothingByAngle, if the object asks for it.
     std::shared_ptr<const Mesh> loadMesh(const Node& file, const std::string& model,
-                                         const ModelReader& read);
+                                         const ModelReader& read,
+                                         const std::optional<float>& smooth);
     // Image files are read once, however many materials (and models) use them.
     std::shared_ptr<const Texture> loadImageTexture(
         const std::filesystem::path& path,
@@ -695,8 +698,14 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadGltfObject(
 std::unique_ptr<Shape> SceneLoader::Reader::loadModelObject(
     const Node& node, const char* what, const std::optional<Transform>& transform,
     const std::string& model, const ModelReader& read) {
-    checkKeys(node, what, {"type", "file", "material", "transform"});
-    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what), model, read);
+    checkKeys(node, what, {"type", "file", "material", "transform", "smooth"});
+    std::optional<float> smooth;
+    if (node.has("smooth")) {
+        smooth = readNumberAtLeast(node["smooth"], 0, true);
+        if (*smooth > SmoothingByAngle::kMaxDegrees)
+            fail(node["smooth"], "\"smooth\" must be between 0 and 180 degrees");
+    }
+    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what), model, read, smooth);
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
     // Without "material", the model's own materials (an OBJ's .mtl, a glTF's) are used.
     const Material* material = node.has("material") ? materialOf(node) : nullptr;
@@ -740,12 +749,15 @@ std::unique_ptr<Shape> SceneLoader::Reader::placed(std::unique_ptr<Shape> shape,
 
 std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
                                                           const std::string& model,
-                                                          const ModelReader& read) {
+                                                          const ModelReader& read,
+                                                          const std::optional<float>& smooth) {
     const std::filesystem::path path = baseDir_ / readString(file);
-    const std::string key = model + " " + std::filesystem::weakly_canonical(path).string();
+    const std::string key = model + " " + std::filesystem::weakly_canonical(path).string() +
+                            (smooth ? " smooth " + std::to_string(*smooth) : "");
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
         std::shared_ptr<TriangleMesh> triangles = read(path);
+        if (smooth) SmoothingByAngle::apply(*triangles, *smooth);
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
         meshes_[key] = mesh;
         scene_.statistics().uniqueTriangles += mesh->triangles().triangleCount();

@@ -34,6 +34,8 @@ const std::string kValidScene = R"({
 
 // The project's sky, for the environment's cases whose map must be read.
 const std::string kSky = LANCER_SOURCE_DIR "/scenes/skies/sky.hdr";
+// A model without normals, for the cases of "smooth".
+const std::string kTeapot = LANCER_SOURCE_DIR "/scenes/models/utah_teapot/teapot.obj";
 
 struct ErrorCase {
     std::string name{};
@@ -407,6 +409,16 @@ const ErrorCase kErrorCases[] = {
      .replace = R"("max_depth": 3 })",
      .with = R"("max_depth": 3, "exposure": @-65 })",
      .mentions = {R"("exposure" must be between -64 and 64 stops)"}},
+    {.name = "SmoothAbove180Degrees",
+     .replace = R"({ "type": "sphere")",
+     .with = R"({ "type": "mesh", "file": ")" + kTeapot + R"(", "smooth": @181 },
+                { "type": "sphere")",
+     .mentions = {R"("smooth" must be between 0 and 180 degrees)"}},
+    {.name = "SmoothNegative",
+     .replace = R"({ "type": "sphere")",
+     .with = R"({ "type": "mesh", "file": ")" + kTeapot + R"(", "smooth": @-1 },
+                { "type": "sphere")",
+     .mentions = {R"("smooth")"}},
     {.name = "SampleClampZero",
      .replace = R"("max_depth": 3 })",
      .with = R"("max_depth": 3, "clamp": @0 })",
