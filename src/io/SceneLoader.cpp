@@ -106,6 +106,8 @@ private:
     void loadCamera(const Node& node);
     void loadMaterials(const Node& node);
     std::unique_ptr<Material> loadMaterial(const Node& node);
+    // A warning for each reflectance written as 0-255 (a beginner's trap).
+    void warnOfByteColours(const Node& material) const;
     // The normal or bump map of a material's object (normal_map, bump_map, bump_scale), or null.
     std::shared_ptr<const ShadingNormalMap> loadShadingNormalMap(const Node& material);
     std::shared_ptr<const Texture> loadTexture(const Node& node);
@@ -556,7 +558,30 @@ std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
               withKeys({"type", "normal_map", "bump_map", "bump_scale"}, entry.keys()));
     std::unique_ptr<Material> material = entry.create(ObjectParameters(*this, node, "a material"));
     material->setShadingNormalMap(loadShadingNormalMap(node));
+    warnOfByteColours(node);
     return material;
+}
+
+void SceneLoader::Reader::warnOfByteColours(const Node& material) const {
+    // Reflectances only: they lie in [0, 1], so whole numbers up to 255 above 1 are a picker's
+    // bytes. Emission and light radiances are legitimately large and often whole.
+    for (const char* key : {"diffuse", "ambient", "specular", "reflection", "transmission"}) {
+        if (!material.has(key)) continue;
+        const nlohmann::json& value = material[key].value;
+        std::vector<double> channels;
+        if (value.is_number()) channels.push_back(value.get<double>());
+        if (value.is_array())
+            for (const nlohmann::json& channel : value)
+                if (channel.is_number()) channels.push_back(channel.get<double>());
+        if (channels.empty()) continue;
+        const bool bytes = std::all_of(channels.begin(), channels.end(), [](double c) {
+            return c >= 0 && c <= 255 && c == std::floor(c);
+        });
+        if (bytes && *std::max_element(channels.begin(), channels.end()) > 1)
+            warn(material[key], "\"" + std::string(key) + "\" " + value.dump() +
+                                    " looks like 8-bit values (0 to 255): colours are linear, "
+                                    "from 0 to 1 (divide by 255, then convert from sRGB)");
+    }
 }
 
 std::shared_ptr<const ShadingNormalMap> SceneLoader::Reader::loadShadingNormalMap(
