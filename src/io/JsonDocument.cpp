@@ -6,9 +6,11 @@
 #include <cstring>
 #include <iterator>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "io/InputFile.h"
+#include "io/JsonSyntax.h"
 
 namespace lancer {
 
@@ -121,8 +123,9 @@ public:
     }
     bool parse_error(std::size_t position, const std::string&,
                      const nlohmann::detail::exception& e) {
-        errorMessage = withoutNlohmannPrefix(e.what());
         errorOffset = errorPlace(position);
+        errorMessage = JsonSyntax::explain(text_, errorOffset, withoutNlohmannPrefix(e.what()),
+                                           innermostOpen());
         return false;
     }
 
@@ -136,6 +139,12 @@ private:
         std::uint32_t nextIndex = 0;
         std::uint32_t memberValue = 0;  // an object's: the number of the member whose key was read
     };
+
+    std::optional<JsonSyntax::OpenContainer> innermostOpen() const {
+        if (stack_.empty()) return std::nullopt;
+        const Container& c = stack_.back();
+        return JsonSyntax::OpenContainer{c.isArray ? '[' : '{', doc_.positions_[c.id].value.line};
+    }
 
     // nlohmann's messages read "[json.exception.parse_error.101] parse error at line L, column C:
     // what" or "[json.exception.out_of_range.406] what": keep only "what", the position is given
@@ -250,10 +259,11 @@ private:
     std::size_t lineStart_ = 0;
 };
 
-JsonDocument JsonDocument::parse(const std::string& text, const std::string& fileName) {
+JsonDocument JsonDocument::parse(const std::string& original, const std::string& fileName) {
     // The value numbers are 32-bit (see positions_).
-    if (text.size() > InputFile::kMaxSceneBytes)
+    if (original.size() > InputFile::kMaxSceneBytes)
         throw InputFile::tooLarge(fileName, "scene files", InputFile::kMaxSceneBytes);
+    const std::string text = JsonSyntax::withoutTrailingCommas(original);
     JsonDocument doc;
     doc.fileName_ = fileName;
     std::size_t lastRead = 0;

@@ -13,8 +13,8 @@
 
 namespace lancer {
 
-// A parsed JSON file (comments allowed) that remembers where each value and each object key
-// stands in the text, so that errors found later can name the line and column.
+// A parsed JSON file (comments and trailing commas allowed) that remembers where each value and
+// each object key stands in the text, so that errors found later can name the line and column.
 // Values are addressed by JSON pointer ("/objects/2/radius"); the root is "".
 class JsonDocument {
 public:
@@ -22,8 +22,8 @@ public:
     // deeper text is an attack on the parser rather than a scene.
     static constexpr std::size_t kMaxNesting = 256;
 
-    // Throws InputError naming `fileName` and the position of a syntax error or of the container
-    // nested deeper than kMaxNesting.
+    // Throws InputError naming `fileName` and the position of a syntax error (in the words of
+    // JsonSyntax::explain) or of the container nested deeper than kMaxNesting.
     static JsonDocument parse(const std::string& text, const std::string& fileName);
 
     const nlohmann::json& root() const { return root_; }

@@ -17,6 +17,7 @@
 #include "geometry/Instance.h"
 #include "geometry/Plane.h"
 #include "geometry/Quad.h"
+#include "geometry/SmoothingByAngle.h"
 #include "geometry/Sphere.h"
 #include "geometry/Torus.h"
 #include "geometry/Triangle.h"
@@ -105,6 +106,8 @@ private:
     void loadCamera(const Node& node);
     void loadMaterials(const Node& node);
     std::unique_ptr<Material> loadMaterial(const Node& node);
+    // A warning for each reflectance written as 0-255 (a beginner's trap).
+    void warnOfByteColours(const Node& material) const;
     // The normal or bump map of a material's object (normal_map, bump_map, bump_scale), or null.
     std::shared_ptr<const ShadingNormalMap> loadShadingNormalMap(const Node& material);
     std::shared_ptr<const Texture> loadTexture(const Node& node);
@@ -163,8 +166,10 @@ private:
                                    const std::optional<Transform>& transform);
     static std::unique_ptr<Shape> placed(std::unique_ptr<Shape> shape,
                                          const std::optional<Transform>& transform);
+    // `smooth`: the threshold angle of SmoothingByAngle, if the object asks for it.
     std::shared_ptr<const Mesh> loadMesh(const Node& file, const std::string& model,
-                                         const ModelReader& read);
+                                         const ModelReader& read,
+                                         const std::optional<float>& smooth);
     // Image files are read once, however many materials (and models) use them.
     std::shared_ptr<const Texture> loadImageTexture(
         const std::filesystem::path& path,
@@ -412,7 +417,7 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
     checkKeys(node, "\"render\"",
               {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive",
-               "exposure", "tonemap"});
+               "exposure", "tonemap", "clamp"});
     RenderSettings& settings = scene_.settings();
     if (node.has("width"))
         settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
@@ -438,6 +443,7 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     }
     if (node.has("tonemap"))
         settings.tonemap = lookUp(ToneMapper::operators(), node["tonemap"], "tonemap").name;
+    if (node.has("clamp")) settings.sampleClamp = readNumberAtLeast(node["clamp"], 0, false);
 }
 
 void SceneLoader::Reader::loadFilter(const Node& node) {
@@ -553,7 +559,30 @@ std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
               withKeys({"type", "normal_map", "bump_map", "bump_scale"}, entry.keys()));
     std::unique_ptr<Material> material = entry.create(ObjectParameters(*this, node, "a material"));
     material->setShadingNormalMap(loadShadingNormalMap(node));
+    warnOfByteColours(node);
     return material;
+}
+
+void SceneLoader::Reader::warnOfByteColours(const Node& material) const {
+    // Reflectances only: they lie in [0, 1], so whole numbers up to 255 above 1 are a picker's
+    // bytes. Emission and light radiances are legitimately large and often whole.
+    for (const char* key : {"diffuse", "ambient", "specular", "reflection", "transmission"}) {
+        if (!material.has(key)) continue;
+        const nlohmann::json& value = material[key].value;
+        std::vector<double> channels;
+        if (value.is_number()) channels.push_back(value.get<double>());
+        if (value.is_array())
+            for (const nlohmann::json& channel : value)
+                if (channel.is_number()) channels.push_back(channel.get<double>());
+        if (channels.empty()) continue;
+        const bool bytes = std::all_of(channels.begin(), channels.end(), [](double c) {
+            return c >= 0 && c <= 255 && c == std::floor(c);
+        });
+        if (bytes && *std::max_element(channels.begin(), channels.end()) > 1)
+            warn(material[key], "\"" + std::string(key) + "\" " + value.dump() +
+                                    " looks like 8-bit values (0 to 255): colours are linear, "
+                                    "from 0 to 1 (divide by 255, then convert from sRGB)");
+    }
 }
 
 std::shared_ptr<const ShadingNormalMap> SceneLoader::Reader::loadShadingNormalMap(
@@ -695,8 +724,14 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadGltfObject(
 std::unique_ptr<Shape> SceneLoader::Reader::loadModelObject(
     const Node& node, const char* what, const std::optional<Transform>& transform,
     const std::string& model, const ModelReader& read) {
-    checkKeys(node, what, {"type", "file", "material", "transform"});
-    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what), model, read);
+    checkKeys(node, what, {"type", "file", "material", "transform", "smooth"});
+    std::optional<float> smooth;
+    if (node.has("smooth")) {
+        smooth = readNumberAtLeast(node["smooth"], 0, true);
+        if (*smooth > SmoothingByAngle::kMaxDegrees)
+            fail(node["smooth"], "\"smooth\" must be between 0 and 180 degrees");
+    }
+    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what), model, read, smooth);
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
     // Without "material", the model's own materials (an OBJ's .mtl, a glTF's) are used.
     const Material* material = node.has("material") ? materialOf(node) : nullptr;
@@ -740,12 +775,15 @@ std::unique_ptr<Shape> SceneLoader::Reader::placed(std::unique_ptr<Shape> shape,
 
 std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
                                                           const std::string& model,
-                                                          const ModelReader& read) {
+                                                          const ModelReader& read,
+                                                          const std::optional<float>& smooth) {
     const std::filesystem::path path = baseDir_ / readString(file);
-    const std::string key = model + " " + std::filesystem::weakly_canonical(path).string();
+    const std::string key = model + " " + std::filesystem::weakly_canonical(path).string() +
+                            (smooth ? " smooth " + std::to_string(*smooth) : "");
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
         std::shared_ptr<TriangleMesh> triangles = read(path);
+        if (smooth) SmoothingByAngle::apply(*triangles, *smooth);
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
         meshes_[key] = mesh;
         scene_.statistics().uniqueTriangles += mesh->triangles().triangleCount();

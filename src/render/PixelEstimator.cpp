@@ -179,6 +179,8 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
                 ++counters.nonFiniteSamples;
                 L = Color();
             }
+            if (settings.sampleClamp && L.maxComponent() > *settings.sampleClamp)
+                L = L * (*settings.sampleClamp / L.maxComponent());
             mean.add(L, film.weight);
             if (aovs) aovMean.add(firstHitProbe_.probe(ray, counters.rays), film.weight);
         }

@@ -32,9 +32,12 @@ struct RenderSettings {
     std::string integrator = "whitted";
     FilterSettings filter;                     // the reconstruction filter
     std::optional<AdaptiveSettings> adaptive;  // none: every pixel takes samplesPerPixel
-    float exposure = 0;                        // stops: the outputs are scaled by 2^exposure
-    std::string tonemap = "clamp";             // the 8-bit outputs' tone operator
-    RadiositySettings radiosity;               // the top-level "radiosity" block
+    // The largest radiance one camera sample may carry (a brighter sample is scaled down to this
+    // largest component): fireflies trade for bias. None: samples are kept as they are.
+    std::optional<float> sampleClamp;
+    float exposure = 0;             // stops: the outputs are scaled by 2^exposure
+    std::string tonemap = "clamp";  // the 8-bit outputs' tone operator
+    RadiositySettings radiosity;    // the top-level "radiosity" block
 };
 
 }  // namespace lancer

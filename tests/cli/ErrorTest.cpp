@@ -34,6 +34,8 @@ const std::string kValidScene = R"({
 
 // The project's sky, for the environment's cases whose map must be read.
 const std::string kSky = LANCER_SOURCE_DIR "/scenes/skies/sky.hdr";
+// A model without normals, for the cases of "smooth".
+const std::string kTeapot = LANCER_SOURCE_DIR "/scenes/models/utah_teapot/teapot.obj";
 
 struct ErrorCase {
     std::string name{};
@@ -139,19 +141,41 @@ const std::vector<std::string> kHugeRender{"--width", "8000", "--height", "8000"
 
 const ErrorCase kErrorCases[] = {
     // --- the scene file: syntax ---
+    // Syntax errors are told as the likely mistake (see JsonSyntaxTest for every kind).
     {.name = "MissingComma",
      .replace = R"("spp": 1, "max_depth")",
      .with = R"("spp": 1 @"max_depth")",
-     .mentions = {"syntax error"}},
-    {.name = "TrailingComma",
+     .mentions = {"missing comma after the value on line 2?"}},
+    {.name = "MissingCommaAtTheEndOfALine",
+     .replace = "\"vfov\": 40 },\n  \"materials\"",
+     .with = "\"vfov\": 40 }\n  @\"materials\"",
+     .mentions = {"missing comma after the value on line 3?"}},
+    // A trailing comma is accepted; two are not.
+    {.name = "TwoTrailingCommas",
      .replace = "40 }\n  ]",
-     .with = "40 },\n  @]",
-     .mentions = {"syntax error"}},
+     .with = "40 },@,\n  ]",
+     .mentions = {"one comma too many?"}},
     // At the end of the input, which is just past the last character.
     {.name = "TruncatedFile",
      .replace = "  ]\n}\n",
      .with = "  ]@\n",
-     .mentions = {"syntax error"}},
+     .mentions = {"missing '}' to close the '{' on line 1?"}},
+    {.name = "ArrayClosedByABrace",
+     .replace = R"("look_at": [0, 0, 0])",
+     .with = R"("look_at": [0, 0, 0@})",
+     .mentions = {"'}' cannot close the '[' on line 3: missing ']'?"}},
+    {.name = "UnquotedKey",
+     .replace = R"("vfov": 40)",
+     .with = R"(@vfov: 40)",
+     .mentions = {R"(keys go in double quotes: "vfov" instead of vfov)"}},
+    {.name = "SingleQuotes",
+     .replace = R"("material": "glass")",
+     .with = R"("material": @'glass')",
+     .mentions = {"double quotes", "not single quotes"}},
+    {.name = "TextAfterTheScene",
+     .replace = "  ]\n}\n",
+     .with = "  ]\n}\n@}\n",
+     .mentions = {"text after the end of the scene, whose outer brackets closed on line 15"}},
     // --- unknown keys, names and types ---
     {.name = "UnknownKeyInSphere",
      .replace = R"("radius": 1)",
@@ -371,7 +395,8 @@ const ErrorCase kErrorCases[] = {
     {.name = "UnknownTonemapListsTheValidOnes",
      .replace = R"("max_depth": 3 })",
      .with = R"("max_depth": 3, "tonemap": @"reinhardt" })",
-     .mentions = {R"(unknown tonemap "reinhardt" (did you mean "reinhard"?); expected "clamp", "reinhard" or "aces")"}},
+     .mentions =
+         {R"(unknown tonemap "reinhardt" (did you mean "reinhard"?); expected "clamp", "reinhard" or "aces")"}},
     {.name = "TonemapNotAString",
      .replace = R"("max_depth": 3 })",
      .with = R"("max_depth": 3, "tonemap": @1 })",
@@ -384,6 +409,24 @@ const ErrorCase kErrorCases[] = {
      .replace = R"("max_depth": 3 })",
      .with = R"("max_depth": 3, "exposure": @-65 })",
      .mentions = {R"("exposure" must be between -64 and 64 stops)"}},
+    {.name = "SmoothAbove180Degrees",
+     .replace = R"({ "type": "sphere")",
+     .with = R"({ "type": "mesh", "file": ")" + kTeapot + R"(", "smooth": @181 },
+                { "type": "sphere")",
+     .mentions = {R"("smooth" must be between 0 and 180 degrees)"}},
+    {.name = "SmoothNegative",
+     .replace = R"({ "type": "sphere")",
+     .with = R"({ "type": "mesh", "file": ")" + kTeapot + R"(", "smooth": @-1 },
+                { "type": "sphere")",
+     .mentions = {R"("smooth")"}},
+    {.name = "SampleClampZero",
+     .replace = R"("max_depth": 3 })",
+     .with = R"("max_depth": 3, "clamp": @0 })",
+     .mentions = {R"("clamp")"}},
+    {.name = "SampleClampNotANumber",
+     .replace = R"("max_depth": 3 })",
+     .with = R"("max_depth": 3, "clamp": @"high" })",
+     .mentions = {R"("clamp")"}},
     {.name = "UnknownIntegratorInScene",
      .replace = R"("max_depth": 3 })",
      .with = R"("max_depth": 3, "integrator": @"whited" })",
@@ -682,7 +725,8 @@ const ErrorCase kErrorCases[] = {
      .arguments = {"--sample", "4"}},
     {.name = "MisspeltAovListsTheValidOnes",
      .prefix = "lancer: error: ",
-     .mentions = {R"(--aov "normal,albdo": unknown output "albdo" (did you mean "albedo"?); expected "albedo", "normal" or "depth")"},
+     .mentions =
+         {R"(--aov "normal,albdo": unknown output "albdo" (did you mean "albedo"?); expected "albedo", "normal" or "depth")"},
      .arguments = {"--aov", "normal,albdo"}},
     {.name = "EmptyAovList",
      .prefix = "lancer: error: ",
