@@ -51,7 +51,7 @@ Color PathIntegrator::sampleOneLight(const Hit& hit, const Bsdf& bsdf, const Vec
     return f * ls.irradiance * (cosine * weight / choice->probability);
 }
 
-Color PathIntegrator::radiance(const Ray& cameraRay, float, Sampler& sampler,
+Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sampler,
                                std::uint64_t& rayCount) const {
     Color L, throughput(1);
     // etaScale: the product of the eta^2 of the refractions so far, which Russian roulette

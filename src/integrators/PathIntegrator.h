@@ -23,7 +23,7 @@ public:
     PathIntegrator(const Scene& scene, int maxDepth);
     static std::unique_ptr<Integrator> create(const Scene& scene, const IntegratorSetup& setup);
 
-    Color radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
+    Color radiance(const Ray& ray, const RayCone& footprint, Sampler& sampler,
                    std::uint64_t& rayCount) const override;
 
     static constexpr int kRouletteDepth = 3;

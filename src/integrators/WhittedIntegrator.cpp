@@ -22,9 +22,9 @@ std::unique_ptr<Integrator> WhittedIntegrator::create(const Scene& scene, const 
     return std::make_unique<WhittedIntegrator>(scene, scene.settings().maxDepth);
 }
 
-Color WhittedIntegrator::radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
+Color WhittedIntegrator::radiance(const Ray& ray, const RayCone& footprint, Sampler& sampler,
                                   std::uint64_t& rayCount) const {
-    return trace({ray, 0, pixelSpread}, 0, sampler, rayCount);
+    return trace({ray, 0, footprint}, 0, sampler, rayCount);
 }
 
 namespace {
@@ -53,7 +53,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     Hit& hit = *found;
     // Directions are unit vectors, so t is a distance.
     const float distance = path.distance + hit.t;
-    setFootprint(hit, ray.direction, distance * path.spread);
+    setFootprint(hit, ray.direction, path.footprint.widthAt(distance));
 
     const Material& material = *hit.material;
     const Vec3 wo = -normalize(ray.direction);
@@ -70,16 +70,16 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
     const std::size_t count = bsdf.specularRays(wo, front, rays);
     for (std::size_t i = 0; i < count; ++i)
-        L += rays[i].weight * trace({hit.spawnRay(rays[i].direction), distance, path.spread},
+        L += rays[i].weight * trace({hit.spawnRay(rays[i].direction), distance, path.footprint},
                                     depth + 1, sampler, rayCount);
     // Distribution ray tracing: one microfacet normal per rough lobe and pixel sample.
     for (std::size_t lobe = 0; lobe < bsdf.roughLobeCount(); ++lobe) {
         std::array<SpecularRay, 2> traced;
         const std::size_t tracedCount = bsdf.tracedRays(lobe, wo, sampler.get2D(), traced);
         for (std::size_t i = 0; i < tracedCount; ++i)
-            L +=
-                traced[i].weight * trace({hit.spawnRay(traced[i].direction), distance, path.spread},
-                                         depth + 1, sampler, rayCount);
+            L += traced[i].weight *
+                 trace({hit.spawnRay(traced[i].direction), distance, path.footprint}, depth + 1,
+                       sampler, rayCount);
     }
     return L;
 }

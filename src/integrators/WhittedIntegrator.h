@@ -21,7 +21,7 @@ public:
     WhittedIntegrator(const Scene& scene, int maxDepth);
     static std::unique_ptr<Integrator> create(const Scene& scene, const IntegratorSetup& setup);
 
-    Color radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
+    Color radiance(const Ray& ray, const RayCone& footprint, Sampler& sampler,
                    std::uint64_t& rayCount) const override;
 
 protected:
@@ -35,11 +35,11 @@ protected:
 
 private:
     // A ray of the path from the camera, with what texture filtering needs to know of the path:
-    // the distance travelled before this ray and the angle the pixel's footprint spreads over.
+    // the distance travelled before this ray and the pixel's footprint along the path.
     struct PathRay {
         Ray ray;
         float distance;
-        float spread;
+        RayCone footprint;
     };
 
     Color trace(const PathRay& path, int depth, Sampler& sampler, std::uint64_t& rayCount) const;

@@ -42,6 +42,10 @@
 #include "math/Transform.h"
 #include "render/Filter.h"
 #include "render/ToneMapper.h"
+#include "scene/FisheyeCamera.h"
+#include "scene/LatLongCamera.h"
+#include "scene/OrthographicCamera.h"
+#include "scene/PerspectiveCamera.h"
 #include "util/DidYouMean.h"
 #include "util/Parameters.h"
 #include "util/Registry.h"
@@ -131,6 +135,12 @@ private:
         std::vector<std::string> (*keys)();
         std::unique_ptr<Material> (*create)(const MaterialParameters& parameters);
     };
+    // A camera type, chosen by the camera's "type" key (by default "perspective").
+    struct CameraType {
+        const char* name;
+        std::vector<std::string> (*keys)();
+        std::unique_ptr<Camera> (*create)(const Parameters& parameters, const CameraFrame& frame);
+    };
     // A texture, named by the one key of its object ({"checker": {...}}).
     struct TextureType {
         const char* name;
@@ -140,6 +150,7 @@ private:
     static const Registry<MaterialType>& materialTypes();
     static const Registry<TextureType>& textureTypes();
     static const Registry<LightType>& lightTypes();
+    static const Registry<CameraType>& cameraTypes();
 
     void loadObject(const Node& node);
     // The shape an element of "objects" (or of a csg's) makes, placed by its transform; null
@@ -330,6 +341,16 @@ const Registry<SceneLoader::Reader::LightType>& SceneLoader::Reader::lightTypes(
     return types;
 }
 
+const Registry<SceneLoader::Reader::CameraType>& SceneLoader::Reader::cameraTypes() {
+    static const Registry<CameraType> types{
+        {"perspective", &PerspectiveCamera::keys, &PerspectiveCamera::create},
+        {"orthographic", &OrthographicCamera::keys, &OrthographicCamera::create},
+        {"fisheye", &FisheyeCamera::keys, &FisheyeCamera::create},
+        {"latlong", &LatLongCamera::keys, &LatLongCamera::create},
+    };
+    return types;
+}
+
 SceneLoader::Reader::Node SceneLoader::Reader::Node::operator[](const std::string& key) const {
     return {value.at(key), JsonDocument::child(pointer, key), inQuotes(key)};
 }
@@ -344,6 +365,7 @@ std::vector<SceneLoader::Vocabulary> SceneLoader::vocabulary() {
             {"lights", Reader::lightTypes().names()},
             {"materials", Reader::materialTypes().names()},
             {"textures", Reader::textureTypes().names()},
+            {"cameras", Reader::cameraTypes().names()},
             {"filters", Filter::types().names()},
             {"tone operators", ToneMapper::operators().names()},
             {"integrators", IntegratorRegistry::table().names()}};
@@ -523,8 +545,9 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
 
 void SceneLoader::Reader::loadCamera(const Node& node) {
     requireObject(node, "\"camera\"");
-    checkKeys(node, "\"camera\"",
-              {"position", "look_at", "up", "vfov", "aperture", "focus_distance"});
+    const CameraType& entry = node.has("type") ? lookUp(cameraTypes(), node["type"], "camera type")
+                                               : *cameraTypes().find("perspective");
+    checkKeys(node, "\"camera\"", withKeys({"type", "position", "look_at", "up"}, entry.keys()));
     const Vec3 position = readVec3(require(node, "position", "the camera"));
     const Vec3 lookAt = readVec3(require(node, "look_at", "the camera"));
     if (position == lookAt) fail(node["look_at"], "\"look_at\" is the camera's own \"position\"");
@@ -532,16 +555,8 @@ void SceneLoader::Reader::loadCamera(const Node& node) {
     if (lengthSquared(cross(normalize(up), normalize(position - lookAt))) < 1e-12f)
         fail(node.has("up") ? node["up"] : node,
              "the camera's \"up\" is parallel to its viewing direction");
-    float vfov = 40;
-    if (node.has("vfov")) {
-        vfov = readNumberAtLeast(node["vfov"], 0, false);
-        if (vfov >= 180) fail(node["vfov"], "\"vfov\" must be below 180 degrees");
-    }
-    const float aperture = node.has("aperture") ? readNumberAtLeast(node["aperture"], 0, true) : 0;
-    const float focusDistance = node.has("focus_distance")
-                                    ? readNumberAtLeast(node["focus_distance"], 0, false)
-                                    : length(position - lookAt);
-    scene_.setCamera(Camera(position, lookAt, up, vfov, aperture, focusDistance));
+    scene_.setCamera(entry.create(ObjectParameters(*this, node, "the camera"),
+                                  CameraFrame(position, lookAt, up)));
 }
 
 void SceneLoader::Reader::loadMaterials(const Node& node) {

@@ -4,6 +4,7 @@
 
 #include "math/Color.h"
 #include "math/Ray.h"
+#include "math/RayCone.h"
 
 namespace lancer {
 
@@ -16,10 +17,10 @@ class Integrator {
 public:
     virtual ~Integrator() = default;
 
-    // The radiance arriving along a camera ray of unit direction. pixelSpread is the angle that a
-    // sample's share of the pixel spans, for texture filtering. rayCount is incremented for every
-    // ray traced (the camera ray included).
-    virtual Color radiance(const Ray& ray, float pixelSpread, Sampler& sampler,
+    // The radiance arriving along a camera ray of unit direction. footprint is the cone of a
+    // sample's share of the pixel, for texture filtering. rayCount is incremented for every ray
+    // traced (the camera ray included).
+    virtual Color radiance(const Ray& ray, const RayCone& footprint, Sampler& sampler,
                            std::uint64_t& rayCount) const = 0;
 };
 

@@ -155,8 +155,9 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
     const Camera& camera = scene_.camera();
     // Each of n samples covers about 1/sqrt(n) of the pixel's width (n: the most samples the pixel
     // may take); the floor keeps some texture filtering at very high counts (as pbrt does).
-    const float pixelSpread = camera.pixelSpreadAngle(settings.height) *
-                              std::max(0.125f, 1 / std::sqrt(static_cast<float>(maxSamples_)));
+    const RayCone footprint =
+        camera.pixelCone(settings.width, settings.height)
+            .scaled(std::max(0.125f, 1 / std::sqrt(static_cast<float>(maxSamples_))));
     Sampler sampler(seed, x, y);
     WeightedMean mean;
     AovMean aovMean;
@@ -169,10 +170,17 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
             const FilterSample film =
                 maxSamples_ == 1 ? FilterSample{{0, 0}, 1} : filterSampler_.sample(filterPoint);
             const Vec2 lens = sampler.get2D();
-            const Ray ray = camera.generateRay(static_cast<float>(x) + 0.5f + film.offset.x,
-                                               static_cast<float>(y) + 0.5f + film.offset.y,
-                                               settings.width, settings.height, lens);
-            Color L = integrator_.radiance(ray, pixelSpread, sampler, counters.rays);
+            const std::optional<Ray> ray =
+                camera.generateRay(static_cast<float>(x) + 0.5f + film.offset.x,
+                                   static_cast<float>(y) + 0.5f + film.offset.y, settings.width,
+                                   settings.height, lens);
+            // Where the camera sees nothing (outside a fisheye's circle) the sample is black.
+            if (!ray) {
+                mean.add(Color(), film.weight);
+                if (aovs) aovMean.add(AovSample{}, film.weight);
+                continue;
+            }
+            Color L = integrator_.radiance(*ray, footprint, sampler, counters.rays);
             // One NaN or infinity would spoil the pixel for good: the sample counts as black
             // (as pbrt does), and is counted for --stats.
             if (!L.isFinite()) {
@@ -182,7 +190,7 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
             if (settings.sampleClamp && L.maxComponent() > *settings.sampleClamp)
                 L = L * (*settings.sampleClamp / L.maxComponent());
             mean.add(L, film.weight);
-            if (aovs) aovMean.add(firstHitProbe_.probe(ray, counters.rays), film.weight);
+            if (aovs) aovMean.add(firstHitProbe_.probe(*ray, counters.rays), film.weight);
         }
         if (n >= maxSamples_) break;
         // The error is relative to the pixel's luminance, so that the threshold means the same

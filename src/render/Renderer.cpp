@@ -25,13 +25,17 @@ Color Renderer::previewSample(const PixelWindow& block, std::uint64_t seed,
     const RenderSettings& settings = scene_.settings();
     Sampler sampler(seed, block.x0, block.y0);
     sampler.startSample(0);
-    const Ray ray = scene_.camera().generateRay(0.5f * static_cast<float>(block.x0 + block.x1),
-                                                0.5f * static_cast<float>(block.y0 + block.y1),
-                                                settings.width, settings.height, Vec2(0.5f, 0.5f));
+    const std::optional<Ray> ray =
+        scene_.camera().generateRay(0.5f * static_cast<float>(block.x0 + block.x1),
+                                    0.5f * static_cast<float>(block.y0 + block.y1), settings.width,
+                                    settings.height, Vec2(0.5f, 0.5f));
+    if (!ray) return Color();
     // The ray stands for the whole block: textures are filtered over the block's footprint.
-    const float blockSpread = scene_.camera().pixelSpreadAngle(settings.height) *
-                              static_cast<float>(std::max(block.width(), block.height()));
-    return integrator_.radiance(ray, blockSpread, sampler, rayCount);
+    const RayCone blockFootprint =
+        scene_.camera()
+            .pixelCone(settings.width, settings.height)
+            .scaled(static_cast<float>(std::max(block.width(), block.height())));
+    return integrator_.radiance(*ray, blockFootprint, sampler, rayCount);
 }
 
 namespace {

@@ -15,7 +15,8 @@ constexpr float kMinDistanceScale = 0.01f, kMaxDistanceScale = 100;
 
 }  // namespace
 
-CameraOrbit::CameraOrbit(const Camera& original) : original_(original) {
+CameraOrbit::CameraOrbit(const Camera& original)
+    : original_(original.orbited(original.frame(), 1)) {
     const Vec3 offset = original.position() - original.lookAt();
     distance_ = length(offset);
     up_ = normalize(original.up());
@@ -34,12 +35,13 @@ void CameraOrbit::zoom(float factor) {
     distanceScale_ = clamp(distanceScale_ * factor, kMinDistanceScale, kMaxDistanceScale);
 }
 
-Camera CameraOrbit::camera() const {
+std::unique_ptr<Camera> CameraOrbit::camera() const {
     const Vec3 direction = std::cos(pitch_) * (std::cos(yaw_) * front_ + std::sin(yaw_) * side_) +
                            std::sin(pitch_) * up_;
-    return Camera(original_.lookAt() + (distance_ * distanceScale_) * direction, original_.lookAt(),
-                  original_.up(), original_.vfovDegrees(), original_.aperture(),
-                  original_.focusDistance() * distanceScale_);
+    const Vec3& lookAt = original_->lookAt();
+    return original_->orbited(
+        CameraFrame(lookAt + (distance_ * distanceScale_) * direction, lookAt, original_->up()),
+        distanceScale_);
 }
 
 }  // namespace lancer

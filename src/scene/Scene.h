@@ -41,8 +41,8 @@ public:
     RenderSettings& settings() { return settings_; }
     const RenderSettings& settings() const { return settings_; }
 
-    const Camera& camera() const { return camera_; }
-    void setCamera(const Camera& camera) { camera_ = camera; }
+    const Camera& camera() const { return *camera_; }
+    void setCamera(std::unique_ptr<const Camera> camera) { camera_ = std::move(camera); }
 
     // The colour of rays that leave the scene when it has no environment.
     const Color& background() const { return background_; }
@@ -90,7 +90,7 @@ public:
 
 private:
     RenderSettings settings_;
-    Camera camera_;
+    std::unique_ptr<const Camera> camera_;
     Color background_{0};
     const EnvironmentLight* environment_ = nullptr;  // one of lights_, or none
     Color ambient_{0};

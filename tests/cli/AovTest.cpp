@@ -12,7 +12,7 @@
 #include "LancerRun.h"
 #include "PfmFile.h"
 #include "math/Vec3.h"
-#include "scene/Camera.h"
+#include "scene/PerspectiveCamera.h"
 
 namespace lancer::test {
 namespace {
@@ -55,9 +55,11 @@ struct TestCamera {
     }
     // The ray through the centre of pixel (x, y), in double from the float one.
     std::pair<Vec3d, Vec3d> ray(int x, int y) const {
-        const Camera camera(Vec3(position), Vec3(lookAt), Vec3(0, 1, 0), 40);
-        const Ray r = camera.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f,
-                                         width, height, Vec2(0.5f, 0.5f));
+        const PerspectiveCamera camera(CameraFrame(Vec3(position), Vec3(lookAt), Vec3(0, 1, 0)),
+                                       40);
+        const Ray r =
+            *camera.generateRay(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f, width,
+                                height, Vec2(0.5f, 0.5f));
         return {Vec3d(r.origin), Vec3d(r.direction)};
     }
 };

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "TestSupport.h"
-#include "scene/Camera.h"
+#include "scene/PerspectiveCamera.h"
 
 namespace lancer {
 namespace {
@@ -34,9 +34,9 @@ struct CameraSpec {
                          (1 - 2 * py / height) * tanH() * v() - w());
     }
 
-    Camera camera(float aperture = 0, float focusDistance = 1) const {
-        return Camera(Vec3(position), Vec3(lookAt), Vec3(up), static_cast<float>(vfovDegrees),
-                      aperture, focusDistance);
+    PerspectiveCamera camera(float aperture = 0, float focusDistance = 1) const {
+        return PerspectiveCamera(CameraFrame(Vec3(position), Vec3(lookAt), Vec3(up)),
+                                 static_cast<float>(vfovDegrees), aperture, focusDistance);
     }
 };
 
@@ -48,14 +48,14 @@ const CameraSpec kStraight{Vec3d(0, 0, 5), Vec3d(0, 0, 0), Vec3d(0, 1, 0), 90, 2
 const Vec2 kLensCentre(0.5f, 0.5f);
 
 void expectPinholeRaysFollowTheFormula(const CameraSpec& spec) {
-    const Camera camera = spec.camera();
+    const PerspectiveCamera camera = spec.camera();
     const Vec3 position(spec.position);
     // Pixel centres over the whole image, and its corners.
     for (int j = 0; j < spec.height; j += 7) {
         for (int i = 0; i < spec.width; i += 9) {
             const Ray ray =
-                camera.generateRay(static_cast<float>(i) + 0.5f, static_cast<float>(j) + 0.5f,
-                                   spec.width, spec.height, kLensCentre);
+                *camera.generateRay(static_cast<float>(i) + 0.5f, static_cast<float>(j) + 0.5f,
+                                    spec.width, spec.height, kLensCentre);
             EXPECT_EQ(ray.origin, position);
             EXPECT_VEC3_NEAR(ray.direction, Vec3(spec.direction(i + 0.5, j + 0.5)), kTolerance)
                 << "pixel " << i << ", " << j;
@@ -64,7 +64,7 @@ void expectPinholeRaysFollowTheFormula(const CameraSpec& spec) {
     const float w = static_cast<float>(spec.width), h = static_cast<float>(spec.height);
     for (const Vec2& corner : {Vec2(0, 0), Vec2(w, 0), Vec2(0, h), Vec2(w, h)}) {
         const Ray ray =
-            camera.generateRay(corner.x, corner.y, spec.width, spec.height, kLensCentre);
+            *camera.generateRay(corner.x, corner.y, spec.width, spec.height, kLensCentre);
         EXPECT_VEC3_NEAR(ray.direction, Vec3(spec.direction(corner.x, corner.y)), kTolerance)
             << "corner " << corner.x << ", " << corner.y;
     }
@@ -76,7 +76,7 @@ TEST(CameraTest, PinholeRaysFollowTheContractFormula) {
 }
 
 TEST(CameraTest, CentreRayLooksAtTheTarget) {
-    const Ray ray = kOblique.camera().generateRay(320, 240, 640, 480, kLensCentre);
+    const Ray ray = *kOblique.camera().generateRay(320, 240, 640, 480, kLensCentre);
     EXPECT_VEC3_NEAR(ray.direction, Vec3(normalize(kOblique.lookAt - kOblique.position)),
                      kTolerance);
 }
@@ -84,32 +84,32 @@ TEST(CameraTest, CentreRayLooksAtTheTarget) {
 TEST(CameraTest, ImageEdgesAreAtHalfTheFieldOfView) {
     // kStraight: vfov 90, so the top edge is 45 degrees up; the image is twice as wide as high,
     // so the right edge is atan(2) to the right. y grows downwards in the image.
-    const Camera camera = kStraight.camera();
+    const PerspectiveCamera camera = kStraight.camera();
     const float half = std::sqrt(0.5f);
-    EXPECT_VEC3_NEAR(camera.generateRay(100, 0, 200, 100, kLensCentre).direction,
+    EXPECT_VEC3_NEAR(camera.generateRay(100, 0, 200, 100, kLensCentre)->direction,
                      Vec3(0, half, -half), kTolerance);
-    EXPECT_VEC3_NEAR(camera.generateRay(100, 100, 200, 100, kLensCentre).direction,
+    EXPECT_VEC3_NEAR(camera.generateRay(100, 100, 200, 100, kLensCentre)->direction,
                      Vec3(0, -half, -half), kTolerance);
     const float root5 = std::sqrt(5.0f);
-    EXPECT_VEC3_NEAR(camera.generateRay(200, 50, 200, 100, kLensCentre).direction,
+    EXPECT_VEC3_NEAR(camera.generateRay(200, 50, 200, 100, kLensCentre)->direction,
                      Vec3(2 / root5, 0, -1 / root5), kTolerance);
-    EXPECT_VEC3_NEAR(camera.generateRay(0, 50, 200, 100, kLensCentre).direction,
+    EXPECT_VEC3_NEAR(camera.generateRay(0, 50, 200, 100, kLensCentre)->direction,
                      Vec3(-2 / root5, 0, -1 / root5), kTolerance);
 }
 
 TEST(CameraTest, SameImagePointAtAnyResolutionGivesTheSameRay) {
-    const Camera camera = kOblique.camera();
-    const Ray small = camera.generateRay(10.5f, 20.25f, 64, 48, kLensCentre);
-    const Ray large = camera.generateRay(105, 202.5f, 640, 480, kLensCentre);
+    const PerspectiveCamera camera = kOblique.camera();
+    const Ray small = *camera.generateRay(10.5f, 20.25f, 64, 48, kLensCentre);
+    const Ray large = *camera.generateRay(105, 202.5f, 640, 480, kLensCentre);
     EXPECT_VEC3_NEAR(small.direction, large.direction, kTolerance);
 }
 
 TEST(CameraTest, ZeroApertureIgnoresTheLensSample) {
-    const Camera camera = kOblique.camera(0, 3);
+    const PerspectiveCamera camera = kOblique.camera(0, 3);
     Random random(61);
     for (int i = 0; i < 100; ++i) {
         const Vec2 lens(static_cast<float>(random.uniform()), static_cast<float>(random.uniform()));
-        const Ray ray = camera.generateRay(100.5f, 200.5f, 640, 480, lens);
+        const Ray ray = *camera.generateRay(100.5f, 200.5f, 640, 480, lens);
         EXPECT_EQ(ray.origin, Vec3(kOblique.position));
         EXPECT_VEC3_NEAR(ray.direction, Vec3(kOblique.direction(100.5, 200.5)), kTolerance);
     }
@@ -120,7 +120,7 @@ TEST(CameraTest, ZeroApertureIgnoresTheLensSample) {
 // meets the plane of focus, at focus_distance along -w.
 TEST(CameraTest, ThinLensRaysStartOnTheLensAndMeetAtTheFocusPoint) {
     constexpr float kAperture = 0.25f, kFocusDistance = 4.5f;
-    const Camera camera = kOblique.camera(kAperture, kFocusDistance);
+    const PerspectiveCamera camera = kOblique.camera(kAperture, kFocusDistance);
     const Vec3d w = kOblique.w();
     Random random(62);
     double widest = 0;
@@ -128,7 +128,7 @@ TEST(CameraTest, ThinLensRaysStartOnTheLensAndMeetAtTheFocusPoint) {
         const double px = random.uniform(0, 640), py = random.uniform(0, 480);
         const Vec2 lens(static_cast<float>(random.uniform()), static_cast<float>(random.uniform()));
         const Ray ray =
-            camera.generateRay(static_cast<float>(px), static_cast<float>(py), 640, 480, lens);
+            *camera.generateRay(static_cast<float>(px), static_cast<float>(py), 640, 480, lens);
 
         const Vec3d pinhole = kOblique.direction(px, py);
         const Vec3d focusPoint = kOblique.position + (kFocusDistance / dot(pinhole, -w)) * pinhole;
@@ -147,8 +147,8 @@ TEST(CameraTest, ThinLensRaysStartOnTheLensAndMeetAtTheFocusPoint) {
 }
 
 TEST(CameraTest, LensCentreSampleIsThePinholeRay) {
-    const Camera camera = kOblique.camera(0.25f, 4.5f);
-    const Ray ray = camera.generateRay(123.5f, 45.5f, 640, 480, kLensCentre);
+    const PerspectiveCamera camera = kOblique.camera(0.25f, 4.5f);
+    const Ray ray = *camera.generateRay(123.5f, 45.5f, 640, 480, kLensCentre);
     EXPECT_EQ(ray.origin, Vec3(kOblique.position));
     EXPECT_VEC3_NEAR(ray.direction, Vec3(kOblique.direction(123.5, 45.5)), kTolerance);
 }

@@ -113,11 +113,11 @@ TEST(SceneLoaderTest, LoadsTheCamera) {
     std::vector<std::string> warnings;
     const Scene scene = load(kFullScene, warnings);
     // The lens centre gives the pinhole ray; the image centre looks at look_at.
-    const Ray ray = scene.camera().generateRay(160, 120, 320, 240, Vec2(0.5f, 0.5f));
+    const Ray ray = *scene.camera().generateRay(160, 120, 320, 240, Vec2(0.5f, 0.5f));
     EXPECT_EQ(ray.origin, Vec3(0, 1, 6));
     EXPECT_VEC3_NEAR(ray.direction, Vec3(0, 0, -1), kTolerance);
     // Aperture 0.1: other lens samples start elsewhere on the lens.
-    const Ray lensRay = scene.camera().generateRay(160, 120, 320, 240, Vec2(0.9f, 0.5f));
+    const Ray lensRay = *scene.camera().generateRay(160, 120, 320, 240, Vec2(0.9f, 0.5f));
     EXPECT_NEAR(length(lensRay.origin - Vec3(0, 1, 6)), 0.08f, kTolerance);
 }
 
