@@ -12,31 +12,17 @@ the convergence check fails. The error measure and what the times measure: bench
 from __future__ import annotations
 
 import argparse
-import math
-import os
 import re
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 from time_to_error import (  # bench/time_to_error.py, beside this script
-    CpuGate,
     MitsubaRenderer,
-    Run,
-    convergence_check,
-    plot,
-    add_run,
-    print_conditions,
-    print_convergence,
-    print_ratios,
-    print_runs,
-    read_exr,
+    Measurements,
+    add_common_arguments,
     render_interleaved,
-    relative_rmse,
     run_lancer,
-    spp_list,
-    write_csv,
 )
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -92,53 +78,13 @@ def mitsuba_cornell_box(mi) -> dict:
 
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--lancer", type=Path, default=ROOT / "bin" / "lancer")
-    parser.add_argument("--threads", type=int, default=2)
-    parser.add_argument("--path-spp", type=spp_list, default=spp_list("4,16,64,256,1024,4096"))
-    parser.add_argument("--mitsuba-spp", type=spp_list, default=spp_list("4,16,64,256,1024"))
+    add_common_arguments(parser, "4,16,64,256,1024,4096", "cornell-time-to-error", 0.01, 64)
     parser.add_argument("--no-mitsuba", action="store_true", help="lancer only (no Mitsuba curves)")
     parser.add_argument("--no-radiosity", action="store_true", help="no radiosity runs")
-    parser.add_argument(
-        "--out",
-        type=Path,
-        default=ROOT / "docs" / "bench",
-        help="folder for cornell-time-to-error.{csv,png}",
-    )
-    parser.add_argument(
-        "--max-wait",
-        type=float,
-        default=60,
-        help="before each timed run, wait up to this many seconds for idle CPUs",
-    )
-    parser.add_argument(
-        "--max-error",
-        type=float,
-        default=0.01,
-        help="convergence check: lancer path's error at the highest spp",
-    )
-    parser.add_argument(
-        "--slope-tolerance",
-        type=float,
-        default=0.1,
-        help="convergence check: allowed distance of the fitted slope from -0.5",
-    )
-    parser.add_argument(
-        "--slope-from",
-        type=int,
-        default=64,
-        help="convergence check: fit the slope to the path runs from this spp on",
-    )
     args = parser.parse_args()
 
-    if not os.access(args.lancer, os.X_OK):
-        sys.exit(f"cornell_time_to_error: no lancer program at {args.lancer}")
-    gate = CpuGate(args.max_wait)
-    load_before = Path("/proc/loadavg").read_text().split()[:3]
-    reference = read_exr(REFERENCE_IMAGE)
-    runs: list[Run] = []
-
-    def record(*run, **details):
-        add_run(runs, reference, *run, **details)
+    measurements = Measurements(args, REFERENCE_IMAGE)
+    gate, record = measurements.gate, measurements.record
 
     mitsuba = (
         []
@@ -168,28 +114,15 @@ def main() -> int:
                 note,
             )
 
-    args.out.mkdir(parents=True, exist_ok=True)
-    write_csv(runs, args.out / "cornell-time-to-error.csv")
-    check = convergence_check(runs, REFERENCE_SPP, args.max_error, args.slope_tolerance, args.slope_from)
-    plot(
-        runs,
-        args.out / "cornell-time-to-error.png",
+    return measurements.report(
+        args,
+        "cornell-time-to-error",
+        "Cornell box: time to error",
         f"Cornell box 256x256, max depth 7 (Mitsuba 8), {args.threads} threads",
-        check["reference_noise"],
-        "Mitsuba 16384 spp",
+        REFERENCE_SPP,
+        ["lancer path", "lancer radiosity"],
+        ["mitsuba scalar_rgb", "mitsuba llvm_ad_rgb"],
     )
-    load_after = Path("/proc/loadavg").read_text().split()[:3]
-
-    print("## Cornell box: time to error\n")
-    print_conditions(args.threads, load_before, load_after, gate)
-    print(
-        f"- written: {args.out / 'cornell-time-to-error.csv'}, "
-        f"{args.out / 'cornell-time-to-error.png'}\n"
-    )
-    print_runs(runs)
-    print_ratios(runs, ["lancer path", "lancer radiosity"], ["mitsuba scalar_rgb", "mitsuba llvm_ad_rgb"])
-    print_convergence(check, args.slope_tolerance, args.max_error)
-    return 0 if check["passed"] else 1
 
 
 if __name__ == "__main__":

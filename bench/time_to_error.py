@@ -20,6 +20,7 @@ from __future__ import annotations
 import argparse
 import csv
 import math
+import os
 import re
 import subprocess
 import sys
@@ -29,6 +30,8 @@ from pathlib import Path
 
 import image_error  # bench/image_error.py, beside this script
 import numpy as np
+
+ROOT = Path(__file__).resolve().parent.parent
 
 def relative_rmse(image: np.ndarray, reference: np.ndarray) -> float:
     """The measure of bench/image_error.py (the adaptive-sampling benchmark's), the same code."""
@@ -375,3 +378,84 @@ def render_interleaved(lancer_path, mitsuba: list[MitsubaRenderer], path_spp, mi
         for renderer in mitsuba if spp in mitsuba_spp else []:
             image, seconds = renderer.render(spp)
             record(f"mitsuba {renderer.variant}", f"{spp} spp", spp, image, seconds)
+
+
+def add_common_arguments(
+    parser: argparse.ArgumentParser, path_spp: str, out_name: str, max_error: float, slope_from: int
+) -> None:
+    """The options every time-to-error script takes; the arguments are their defaults."""
+    parser.add_argument("--lancer", type=Path, default=ROOT / "bin" / "lancer")
+    parser.add_argument("--threads", type=int, default=2)
+    parser.add_argument("--path-spp", type=spp_list, default=spp_list(path_spp))
+    parser.add_argument("--mitsuba-spp", type=spp_list, default=spp_list("4,16,64,256,1024"))
+    parser.add_argument(
+        "--out",
+        type=Path,
+        default=ROOT / "docs" / "bench",
+        help=f"folder for {out_name}.{{csv,png}}",
+    )
+    parser.add_argument(
+        "--max-wait",
+        type=float,
+        default=60,
+        help="before each timed run, wait up to this many seconds for idle CPUs",
+    )
+    parser.add_argument(
+        "--max-error",
+        type=float,
+        default=max_error,
+        help="convergence check: lancer path's error at the highest spp",
+    )
+    parser.add_argument(
+        "--slope-tolerance",
+        type=float,
+        default=0.1,
+        help="convergence check: allowed distance of the fitted slope from -0.5",
+    )
+    parser.add_argument(
+        "--slope-from",
+        type=int,
+        default=slope_from,
+        help="convergence check: fit the slope to the path runs from this spp on",
+    )
+
+
+class Measurements:
+    """The runs of one benchmark against its reference image, with the gate before each run and
+    the load average at the start."""
+
+    def __init__(self, args: argparse.Namespace, reference_image: Path):
+        if not os.access(args.lancer, os.X_OK):
+            sys.exit(f"{Path(sys.argv[0]).stem}: no lancer program at {args.lancer}")
+        self.gate = CpuGate(args.max_wait)
+        self.load_before = Path("/proc/loadavg").read_text().split()[:3]
+        self.reference = read_exr(reference_image)
+        self.runs: list[Run] = []
+
+    def record(self, *run, **details) -> None:
+        add_run(self.runs, self.reference, *run, **details)
+
+    def report(self, args, name: str, heading: str, title: str, reference_spp: int,
+               ours: list[str], theirs: list[str]) -> int:
+        """Writes name.{csv,png} into args.out, prints the Markdown report under heading (the
+        plot's title: title) and returns the exit status: 1 if the convergence check failed."""
+        args.out.mkdir(parents=True, exist_ok=True)
+        write_csv(self.runs, args.out / f"{name}.csv")
+        check = convergence_check(
+            self.runs, reference_spp, args.max_error, args.slope_tolerance, args.slope_from
+        )
+        plot(
+            self.runs,
+            args.out / f"{name}.png",
+            title,
+            check["reference_noise"],
+            f"Mitsuba {reference_spp} spp",
+        )
+        load_after = Path("/proc/loadavg").read_text().split()[:3]
+        print(f"## {heading}\n")
+        print_conditions(args.threads, self.load_before, load_after, self.gate)
+        print(f"- written: {args.out / f'{name}.csv'}, {args.out / f'{name}.png'}\n")
+        print_runs(self.runs)
+        print_ratios(self.runs, ours, theirs)
+        print_convergence(check, args.slope_tolerance, args.max_error)
+        return 0 if check["passed"] else 1
