@@ -40,6 +40,7 @@
 #include <set>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
 
 #include "image/Image.h"
 #include "io/InputFile.h"
@@ -124,9 +125,13 @@ Transform::Matrix localMatrix(const tinygltf::Node& node) {
 
 class GltfReader {
 public:
-    GltfReader(const fs::path& path, const tinygltf::Model& model,
+    // parserWarning: what tinygltf said while reading (why an image is missing, for one).
+    GltfReader(const fs::path& path, const tinygltf::Model& model, std::string parserWarning,
                std::vector<std::string>& warnings)
-        : path_(path), model_(model), warnings_(warnings) {}
+        : path_(path),
+          model_(model),
+          parserWarning_(std::move(parserWarning)),
+          warnings_(warnings) {}
 
     std::shared_ptr<TriangleMesh> read();
 
@@ -155,6 +160,7 @@ private:
 
     const fs::path& path_;
     const tinygltf::Model& model_;
+    std::string parserWarning_;
     std::vector<std::string>& warnings_;
     std::set<std::string> warned_;
     TriangleMesh mesh_;
@@ -478,7 +484,9 @@ std::shared_ptr<const Image> GltfReader::texels(int index, const Color& factor, 
     if (image.width <= 0 || image.height <= 0 || channels <= 0 || (bytes != 1 && bytes != 2) ||
         image.image.size() <
             std::size_t(image.width) * std::size_t(image.height) * std::size_t(channels * bytes))
-        fail("image " + std::to_string(source) + " could not be decoded");
+        fail("image " + (image.uri.empty() ? std::to_string(source) : inQuotes(image.uri)) +
+             " is missing or cannot be decoded" +
+             (parserWarning_.empty() ? "" : " (" + oneLine(parserWarning_) + ")"));
     const float largest = bytes == 1 ? 255.0f : 65535.0f;
     auto result = std::make_shared<Image>(image.width, image.height);
     for (int y = 0; y < image.height; ++y)
@@ -515,7 +523,7 @@ std::shared_ptr<TriangleMesh> GltfLoader::load(const fs::path& path,
     if (!read)
         throw InputError(path.string(),
                          "cannot read the glTF file: " + oneLine(error.empty() ? warning : error));
-    return GltfReader(path, model, warnings).read();
+    return GltfReader(path, model, warning, warnings).read();
 }
 
 }  // namespace lancer

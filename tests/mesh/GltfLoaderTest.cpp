@@ -365,6 +365,15 @@ TEST_F(GltfTest, AccessorBeyondItsBufferIsAnError) {
     EXPECT_NE(failure(doc.text()).find("beyond its buffer"), std::string::npos);
 }
 
+TEST_F(GltfTest, MissingImageIsAnErrorNamingIt) {
+    GltfDocument doc;
+    doc.json_()["images"] = {{{"uri", "gone.png"}}};
+    doc.json_()["textures"] = {{{"source", 0}}};
+    doc.json_()["materials"] = {{{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}}};
+    doc.addRoot(doc.node({{"mesh", doc.unitTriangle(0)}}));
+    EXPECT_NE(failure(doc.text()).find("image \"gone.png\" is missing"), std::string::npos);
+}
+
 TEST_F(GltfTest, NodeCycleIsAnError) {
     GltfDocument doc;
     doc.node({{"mesh", doc.unitTriangle()}, {"children", {1}}});
