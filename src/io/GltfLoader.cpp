@@ -43,6 +43,7 @@
 #include <utility>
 
 #include "image/Image.h"
+#include "io/ImageReader.h"
 #include "io/InputFile.h"
 #include "io/ObjSupport.h"
 #include "materials/BlinnPhongMaterial.h"
@@ -121,6 +122,21 @@ Transform::Matrix localMatrix(const tinygltf::Node& node) {
     }
     m[3][3] = 1;
     return m;
+}
+
+// tinygltf's image decoder (stb) behind the image reader's check of the declared size, so that a
+// small file whose header claims a huge image is refused before its pixels are allocated.
+bool decodeSizeCheckedImage(tinygltf::Image* image, int index, std::string* error,
+                            std::string* warning, int width, int height, const unsigned char* bytes,
+                            int size, void*) {
+    try {
+        ImageReader::checkDeclaredSize(bytes, static_cast<std::size_t>(std::max(size, 0)), "");
+    } catch (const InputError& refused) {
+        *error += "image " + std::to_string(index) + ": " + refused.message();
+        return false;
+    }
+    return tinygltf::LoadImageData(image, index, error, warning, width, height, bytes, size,
+                                   nullptr);
 }
 
 class GltfReader {
@@ -515,6 +531,7 @@ std::shared_ptr<TriangleMesh> GltfLoader::load(const fs::path& path,
     if (!fs::exists(path))
         throw InputError(path.string(), "cannot open the glTF file (does it exist?)");
     tinygltf::TinyGLTF parser;
+    parser.SetImageLoader(decodeSizeCheckedImage, nullptr);
     tinygltf::Model model;
     std::string error, warning;
     const bool read = isBinaryGltf(path)

@@ -331,6 +331,29 @@ Image ImageReader::read(const std::filesystem::path& path, Content content) {
     return image;
 }
 
+void ImageReader::checkDeclaredSize(const unsigned char* bytes, std::size_t size,
+                                    const std::string& name) {
+    const auto close = [](FIMEMORY* memory) { FreeImage_CloseMemory(memory); };
+    const std::unique_ptr<FIMEMORY, decltype(close)> memory(
+        FreeImage_OpenMemory(const_cast<BYTE*>(bytes), static_cast<DWORD>(size)), close);
+    if (!memory) return;
+    const FREE_IMAGE_FORMAT format = FreeImage_GetFileTypeFromMemory(memory.get(), 0);
+    if (format == FIF_UNKNOWN || !FreeImage_FIFSupportsNoPixels(format)) return;
+    startCapturingFreeImageMessages();
+    FreeImageBitmap header;
+    try {
+        header.reset(
+            FreeImage_LoadFromMemory(format, memory.get(), loadFlags(format) | FIF_LOAD_NOPIXELS));
+    } catch (const std::exception&) {
+        return;  // damage the decoder will report
+    }
+    if (!header) return;
+    if (const std::string beyond =
+            sizeBeyondLimits(FreeImage_GetWidth(header.get()), FreeImage_GetHeight(header.get()));
+        !beyond.empty())
+        throw InputError(name, "cannot read the image (" + beyond + ")");
+}
+
 std::shared_ptr<const ImageTexture> ImageReader::readTexture(const std::filesystem::path& path,
                                                              Content content) {
     return std::make_shared<const ImageTexture>(

@@ -1,7 +1,9 @@
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "image/Image.h"
 #include "materials/ImageTexture.h"
@@ -34,6 +36,12 @@ public:
     // limits above or holds pixels that are not colour (complex or 32-bit integer data, for
     // example).
     static Image read(const std::filesystem::path& path, Content content = Content::Color);
+    // For images decoded by another library (glTF's, by tinygltf): throws InputError naming
+    // `name` when the encoded image in `bytes` declares a size beyond the limits above, read from
+    // its header alone as read() does before decoding. Bytes FreeImage does not recognise, or
+    // whose header it cannot read alone, pass: the decoder reports those.
+    static void checkDeclaredSize(const unsigned char* bytes, std::size_t size,
+                                  const std::string& name);
     // The image of the file as a texture: read, then its mip-map pyramid built.
     static std::shared_ptr<const ImageTexture> readTexture(const std::filesystem::path& path,
                                                            Content content = Content::Color);

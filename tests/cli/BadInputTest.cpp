@@ -48,6 +48,9 @@ std::string texturedScene(const std::string& file) {
 std::string meshScene(const std::string& file) {
     return scene("", "0.5", R"(, { "type": "mesh", "file": ")" + file + R"(" })");
 }
+std::string gltfScene(const std::string& file) {
+    return scene("", "0.5", R"(, { "type": "gltf", "file": ")" + file + R"(" })");
+}
 const std::string kRadiosityScene = scene(R"(, "integrator": "radiosity")");
 
 struct BadInput {
@@ -131,6 +134,33 @@ const BadInput kBadInputs[] = {
      "is a device, not an MTL file",
      2,
      {{"model.obj", "mtllib /dev/zero\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"}}},
+    {"GltfIsADevice", gltfScene("/dev/zero"), kRender, "is a device, not a glTF file"},
+    {"GltfBufferIsADevice",
+     gltfScene("m.gltf"),
+     kRender,
+     "File is empty : /dev/zero",
+     2,
+     {{"m.gltf", "corpus:gltf/buffer-is-dev-zero.gltf"}}},
+    {"GltfNodeCycle",
+     gltfScene("m.gltf"),
+     kRender,
+     "the node hierarchy has a cycle",
+     2,
+     {{"m.gltf", "corpus:gltf/node-cycle.gltf"}}},
+    {"GltfAccessorBeyondBuffer",
+     gltfScene("m.gltf"),
+     kRender,
+     "accessor POSITION reaches beyond its buffer",
+     2,
+     {{"m.gltf", "corpus:gltf/accessor-beyond-buffer.gltf"}}},
+    // A real 40000 x 10 PNG (the limit is 32768 a side) in a data URI: refused from its header,
+    // before tinygltf's decoder allocates it.
+    {"GltfImageBeyondTheLimits",
+     gltfScene("m.gltf"),
+     kRender,
+     "image 0: cannot read the image (it is 40000 x 10 pixels",
+     2,
+     {{"m.gltf", "corpus:gltf/image-40000-pixels-wide.gltf"}}},
     // --- textures ---
     {"TextureMissing", texturedScene("missing.png"), kRender, "cannot open the image"},
     {"TextureIsADevice", texturedScene("/dev/zero"), kRender, "cannot read the image"},
