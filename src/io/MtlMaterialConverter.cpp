@@ -155,7 +155,14 @@ std::shared_ptr<const Material> MtlMaterialConverter::convert(const tinyobj::mat
                      " is illum 0, an unlit constant colour: it shows its Kd colour, not "
                      "its map_Kd texture");
     }
-    if (model.highlights) material.specular = ks;
+    if (model.highlights) {
+        material.specular = ks;
+        // As the MTL definition has it, map_Ks multiplies Ks.
+        if (!mtl.specular_texname.empty())
+            material.specularMap =
+                readTexture(mtl, mtlPath, "map_Ks", mtl.specular_texname,
+                            ImageReader::Content::Color, "the Ks colour is used alone");
+    }
     if (model.mirror) material.reflection = ks;
     if (mtl.shininess >= 0) material.shininess = mtl.shininess;
     if (mtl.ior > 0) material.ior = mtl.ior;

@@ -114,7 +114,10 @@ private:
     void warnOfByteColours(const Node& material) const;
     // The normal or bump map of a material's object (normal_map, bump_map, bump_scale), or null.
     std::shared_ptr<const ShadingNormalMap> loadShadingNormalMap(const Node& material);
-    std::shared_ptr<const Texture> loadTexture(const Node& node);
+    // A colour, or a texture object; an image texture of `content` (Data: a map of numbers, read
+    // linear, as roughness is).
+    std::shared_ptr<const Texture> loadTexture(
+        const Node& node, ImageReader::Content content = ImageReader::Content::Color);
     // A type of the "objects" or "lights" array, and the member reading its keys.
     struct ObjectType {
         const char* name;
@@ -144,7 +147,8 @@ private:
     // A texture, named by the one key of its object ({"checker": {...}}).
     struct TextureType {
         const char* name;
-        std::shared_ptr<const Texture> (Reader::*load)(const Node& value);
+        std::shared_ptr<const Texture> (Reader::*load)(const Node& value,
+                                                       ImageReader::Content content);
     };
     static const Registry<ObjectType>& objectTypes();
     static const Registry<MaterialType>& materialTypes();
@@ -188,8 +192,9 @@ private:
     // The image file that the string at `file` names; `what` names it in messages ("texture").
     std::shared_ptr<const Texture> loadImageFile(const Node& file, const std::string& what,
                                                  ImageReader::Content content);
-    std::shared_ptr<const Texture> loadImageTextureFile(const Node& file);
-    std::shared_ptr<const Texture> loadCheckerTexture(const Node& checker);
+    std::shared_ptr<const Texture> loadImageTextureFile(const Node& file,
+                                                        ImageReader::Content content);
+    std::shared_ptr<const Texture> loadCheckerTexture(const Node& checker, ImageReader::Content);
     Transform readTransform(const Node& node) const;
     void loadLight(const Node& node);
     // A light that reads its own keys: LightType::keys() and LightType::create(parameters).
@@ -279,6 +284,12 @@ public:
     }
     std::shared_ptr<const Texture> texture(const std::string& key) const override {
         return loader_.loadTexture(loader_.require(node_, key, what_));
+    }
+    std::shared_ptr<const Texture> dataTexture(const std::string& key) const override {
+        return loader_.loadTexture(loader_.require(node_, key, what_), ImageReader::Content::Data);
+    }
+    bool isTexture(const std::string& key) const override {
+        return loader_.require(node_, key, what_).value.is_object();
     }
     std::unique_ptr<Parameters> object(const std::string& key,
                                        const std::vector<std::string>& keys) const override {
@@ -616,17 +627,19 @@ std::shared_ptr<const ShadingNormalMap> SceneLoader::Reader::loadShadingNormalMa
         loadImageFile(material["bump_map"], "bump map", ImageReader::Content::Data), scale);
 }
 
-std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node) {
+std::shared_ptr<const Texture> SceneLoader::Reader::loadTexture(const Node& node,
+                                                                ImageReader::Content content) {
     if (!node.value.is_object()) return std::make_shared<ConstantTexture>(readColor(node));
     checkKeys(node, "a texture", textureTypes().names());
     if (node.value.size() != 1)
         fail(node, "a texture is one of " + textureTypes().quotedNames() + ": {NAME: ...}");
     const std::string name = node.value.begin().key();
-    return (this->*textureTypes().find(name)->load)(node[name]);
+    return (this->*textureTypes().find(name)->load)(node[name], content);
 }
 
-std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTextureFile(const Node& file) {
-    return loadImageFile(file, "texture", ImageReader::Content::Color);
+std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTextureFile(
+    const Node& file, ImageReader::Content content) {
+    return loadImageFile(file, "texture", content);
 }
 
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageFile(const Node& file,
@@ -640,7 +653,8 @@ std::shared_ptr<const Texture> SceneLoader::Reader::loadImageFile(const Node& fi
     }
 }
 
-std::shared_ptr<const Texture> SceneLoader::Reader::loadCheckerTexture(const Node& checker) {
+std::shared_ptr<const Texture> SceneLoader::Reader::loadCheckerTexture(const Node& checker,
+                                                                       ImageReader::Content) {
     requireObject(checker, "\"checker\"");
     checkKeys(checker, "\"checker\"", CheckerTexture::keys());
     return CheckerTexture::create(ObjectParameters(*this, checker, "\"checker\""));

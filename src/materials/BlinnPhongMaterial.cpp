@@ -11,6 +11,7 @@
 #include "materials/MirrorLobe.h"
 #include "materials/RoughConductorLobe.h"
 #include "materials/RoughDielectricLobe.h"
+#include "math/Float.h"
 
 namespace lancer {
 
@@ -52,6 +53,23 @@ std::optional<ConductorIor> readConductor(const MaterialParameters& keys) {
     return conductor;
 }
 
+// A colour key that may be a texture: a colour is the factor, a texture the map (factor 1).
+void readFactorOrMap(const MaterialParameters& keys, const std::string& key, Color& factor,
+                     std::shared_ptr<const Texture>& map) {
+    if (!keys.has(key)) return;
+    if (keys.isTexture(key)) {
+        factor = Color(1);
+        map = keys.texture(key);
+    } else {
+        factor = keys.color(key);
+    }
+}
+
+// The factor times the map at the hit, if there is one.
+Color atHit(const Color& factor, const std::shared_ptr<const Texture>& map, const Hit& hit) {
+    return map ? factor * map->evaluate(hit) : factor;
+}
+
 }  // namespace
 
 std::unique_ptr<Material> BlinnPhongMaterial::create(const MaterialParameters& keys) {
@@ -63,13 +81,16 @@ std::unique_ptr<Material> BlinnPhongMaterial::create(const MaterialParameters& k
     }
     if (keys.has("diffuse")) m.diffuse = keys.texture("diffuse");
     m.ambient = keys.has("ambient") ? keys.texture("ambient") : m.diffuse;
-    if (keys.has("specular")) m.specular = keys.color("specular");
+    readFactorOrMap(keys, "specular", m.specular, m.specularMap);
     if (keys.has("shininess")) m.shininess = keys.numberAbove("shininess", 0, true);
-    if (keys.has("reflection")) m.reflection = keys.color("reflection");
+    readFactorOrMap(keys, "reflection", m.reflection, m.reflectionMap);
     if (keys.has("transmission")) m.transmission = keys.color("transmission");
     if (keys.has("ior")) m.ior = keys.numberAbove("ior", 0, false);
     if (keys.has("emission")) m.emission = keys.color("emission");
-    if (keys.has("roughness")) {
+    if (keys.has("roughness") && keys.isTexture("roughness")) {
+        m.roughness = 1;
+        m.roughnessMap = keys.dataTexture("roughness");
+    } else if (keys.has("roughness")) {
         m.roughness = keys.numberAbove("roughness", 0, true);
         if (m.roughness > 1) keys.fail("roughness", "\"roughness\" must be at most 1");
     }
@@ -79,17 +100,23 @@ std::unique_ptr<Material> BlinnPhongMaterial::create(const MaterialParameters& k
 void BlinnPhongMaterial::addLobes(const Hit& hit, Bsdf& bsdf) const {
     // In the order of the scene format's equation: Whitted's sums keep its rounding.
     bsdf.add<LambertianLobe>(diffuseReflectance(hit));
-    bsdf.add<BlinnPhongLobe>(parameters_.specular, parameters_.shininess);
-    const float alpha = parameters_.roughness;
+    bsdf.add<BlinnPhongLobe>(atHit(parameters_.specular, parameters_.specularMap, hit),
+                             parameters_.shininess);
+    const Color reflection = atHit(parameters_.reflection, parameters_.reflectionMap, hit);
+    const float alpha =
+        parameters_.roughnessMap
+            ? clamp(parameters_.roughness * parameters_.roughnessMap->evaluate(hit).average(), 0.0f,
+                    1.0f)
+            : parameters_.roughness;
     if (alpha > 0) {
-        bsdf.add<RoughConductorLobe>(parameters_.reflection, alpha, parameters_.conductor);
+        bsdf.add<RoughConductorLobe>(reflection, alpha, parameters_.conductor);
         bsdf.add<RoughDielectricLobe>(parameters_.transmission, parameters_.ior, alpha);
         return;
     }
     if (parameters_.conductor)
-        bsdf.add<ConductorLobe>(parameters_.reflection, *parameters_.conductor);
+        bsdf.add<ConductorLobe>(reflection, *parameters_.conductor);
     else
-        bsdf.add<MirrorLobe>(parameters_.reflection);
+        bsdf.add<MirrorLobe>(reflection);
     bsdf.add<DielectricLobe>(parameters_.transmission, parameters_.ior);
 }
 

@@ -32,6 +32,10 @@ public:
         Color emission{0};                                   // emitted radiance
         float roughness = 0;                                 // GGX alpha of kr and kt; 0: smooth
         std::optional<ConductorIor> conductor;               // Fresnel of kr: none is 1
+        // Textures that multiply the factors above where given (the scene's {"texture": ...} for
+        // these keys, whose factor is then 1; MTL's map_Ks, map_refl, map_Pr); null: the factor
+        // alone. A roughness map's value is the mean of its three channels.
+        std::shared_ptr<const Texture> specularMap, reflectionMap, roughnessMap;
     };
 
     // A named metal of the scene file's `metal` key.

@@ -14,6 +14,10 @@ class MaterialParameters : public Parameters {
 public:
     // A colour, or a texture the loader knows ({"texture": FILE}, {"checker": {...}}).
     virtual std::shared_ptr<const Texture> texture(const std::string& key) const = 0;
+    // The same for a map of numbers (roughness): an image is read as linear data, not sRGB.
+    virtual std::shared_ptr<const Texture> dataTexture(const std::string& key) const = 0;
+    // Whether the key holds a texture object rather than a colour or a number.
+    virtual bool isTexture(const std::string& key) const = 0;
 };
 
 }  // namespace lancer

@@ -97,6 +97,19 @@ TEST_F(MtlTest, MapKdIsTheDiffuseAndAmbientTexture) {
     EXPECT_EQ(material.ambient, material.diffuse);
 }
 
+TEST_F(MtlTest, MapKsIsASpecularTextureThatMultipliesKs) {
+    folder_.write("shine.png", "");
+    const BlinnPhongMaterial::Parameters material =
+        loadMaterial("Ks 0.5 0.6 0.7\nmap_Ks shine.png\nillum 2\n");
+    EXPECT_EQ(textures_.requested(), std::vector<fs::path>{folder_.path() / "shine.png"});
+    EXPECT_EQ(textures_.contents(), std::vector<ImageReader::Content>{ImageReader::Content::Color});
+    ASSERT_TRUE(material.specularMap);
+    EXPECT_EQ(colorOf(*material.specularMap), FakeTextures::kColor);
+    EXPECT_EQ(material.specular, Color(0.5f, 0.6f, 0.7f));
+    // Without highlights (illum 1) there is no specular term to texture.
+    EXPECT_FALSE(loadMaterial("Ks 0.5 0.6 0.7\nmap_Ks shine.png\nillum 1\n").specularMap);
+}
+
 TEST_F(MtlTest, KeysLeftOutTakeTheSceneFormatDefaults) {
     const BlinnPhongMaterial::Parameters material = loadMaterial("");
     const BlinnPhongMaterial::Parameters defaults;
