@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -28,19 +29,24 @@ std::set<std::string> scenesOfTheFolder() {
     return names;
 }
 
-// The names that follow `prefix` in `text` (a path's last part: letters, digits, '.', '-', '_').
+// The name that starts at `start` in `text`: a path's last part (letters, digits, '.', '-', '_'),
+// without a sentence's full stop.
+std::string nameAt(const std::string& text, std::size_t start) {
+    std::size_t end = start;
+    while (end < text.size() && (std::isalnum(static_cast<unsigned char>(text[end])) ||
+                                 text[end] == '.' || text[end] == '-' || text[end] == '_'))
+        ++end;
+    std::string name = text.substr(start, end - start);
+    while (!name.empty() && name.back() == '.') name.pop_back();
+    return name;
+}
+
+// The names that follow `prefix` in `text`.
 std::set<std::string> namesAfter(const std::string& text, const std::string& prefix) {
     std::set<std::string> names;
     for (std::size_t at = text.find(prefix); at != std::string::npos;
          at = text.find(prefix, at + 1)) {
-        const std::size_t start = at + prefix.size();
-        std::size_t end = start;
-        while (end < text.size() &&
-               (std::isalnum(static_cast<unsigned char>(text[end])) || text[end] == '.' ||
-                text[end] == '-' || text[end] == '_'))
-            ++end;
-        std::string name = text.substr(start, end - start);
-        while (!name.empty() && name.back() == '.') name.pop_back();  // a sentence's full stop
+        const std::string name = nameAt(text, at + prefix.size());
         if (!name.empty()) names.insert(name);
     }
     return names;
@@ -65,6 +71,52 @@ TEST(Tutorial, EverySceneOfScenesTutorialIsInTheTutorialWithItsPicture) {
         EXPECT_TRUE(pictures.count(picture)) << "the tutorial shows no tutorial/" << picture;
         EXPECT_TRUE(fs::is_regular_file(kSource / "docs/tutorial" / picture)) << picture;
     }
+}
+
+// The sections of the tutorial ("## "), each with the scenes/tutorial file it names first.
+struct Step {
+    std::string scene;  // "" when the section names none
+    std::string text;
+};
+
+std::vector<Step> stepsOf(const std::string& tutorial) {
+    const std::string prefix = "scenes/tutorial/";
+    std::vector<Step> steps;
+    for (std::size_t at = tutorial.find("\n## "); at != std::string::npos;) {
+        const std::size_t next = tutorial.find("\n## ", at + 1);
+        const std::string text = tutorial.substr(at + 1, next - at - 1);
+        const std::size_t named = text.find(prefix);
+        steps.push_back({named == std::string::npos ? "" : nameAt(text, named + prefix.size()), text});
+        at = next;
+    }
+    return steps;
+}
+
+std::string trimmed(const std::string& line) {
+    const std::size_t start = line.find_first_not_of(' ');
+    return start == std::string::npos ? "" : line.substr(start, line.find_last_not_of(' ') + 1 - start);
+}
+
+// The ```jsonc blocks of a step quote its scene: each of their lines is a line of the file.
+TEST(Tutorial, EveryExcerptIsInTheSceneOfItsStep) {
+    int blocks = 0;
+    for (const Step& step : stepsOf(tutorialText())) {
+        const std::string fence = "```jsonc\n";
+        for (std::size_t at = step.text.find(fence); at != std::string::npos;
+             at = step.text.find(fence, at + 1)) {
+            ASSERT_NE(step.scene, "") << "a section with an excerpt names no scene:\n"
+                                      << step.text.substr(0, 80);
+            ++blocks;
+            std::set<std::string> lines;
+            std::istringstream file(readFile(kTutorial / step.scene));
+            for (std::string line; std::getline(file, line);) lines.insert(trimmed(line));
+            const std::size_t start = at + fence.size();
+            std::istringstream block(step.text.substr(start, step.text.find("```\n", start) - start));
+            for (std::string line; std::getline(block, line);)
+                EXPECT_TRUE(lines.count(trimmed(line))) << step.scene << ": " << line;
+        }
+    }
+    EXPECT_GE(blocks, 8);
 }
 
 // Every scene rendered once, small, with its warnings on (no --quiet): 41 x 31 pixels, so that
@@ -141,9 +193,9 @@ Image::Rgb meanOf(const Image& image, int x0, int y0, int x1, int y1) {
     return sum;
 }
 
-// Step 8: the ceiling, which the lamp under it cannot light, is lit by radiosity (the light the
-// walls reflect) and black under whitted (no lights: only the lamp shows); its end by the red
-// wall is redder than its end by the green wall (colour bleeding).
+// Step 8: the ceiling, which the lamp under it does not light (the path tracer's direct light,
+// --max-depth 1, leaves it black), is lit by radiosity with the light the walls reflect, and its
+// end by the red wall is redder than its end by the green wall (colour bleeding).
 TEST_F(TutorialRender, TheCornellBoxCeilingIsLitByTheWallsAndTakesTheirColours) {
     const std::string name = "08-cornell-box-radiosity.json";
     const Image& radiosity = renderOf(name).image;
@@ -157,12 +209,12 @@ TEST_F(TutorialRender, TheCornellBoxCeilingIsLitByTheWallsAndTakesTheirColours) 
     }
     EXPECT_GT(left[0] / left[1], 1.5f * (right[0] / right[1]));
 
-    const Image whitted =
+    const Image direct =
         renderSceneFile(kTutorial / name,
                         {"--width", std::to_string(kWidth), "--height", std::to_string(kHeight),
-                         "--spp", "1", "--integrator", "whitted"})
+                         "--spp", "1", "--integrator", "path", "--max-depth", "1"})
             .image;
-    for (const Image::Rgb& end : {meanOf(whitted, 8, 1, 12, 4), meanOf(whitted, 28, 1, 32, 4)})
+    for (const Image::Rgb& end : {meanOf(direct, 8, 1, 12, 4), meanOf(direct, 28, 1, 32, 4)})
         for (int c = 0; c < 3; ++c) EXPECT_EQ(end[c], 0.0f) << c;
 }
 
