@@ -37,7 +37,8 @@ std::string nameAt(const std::string& text, std::size_t start) {
                                  text[end] == '.' || text[end] == '-' || text[end] == '_'))
         ++end;
     std::string name = text.substr(start, end - start);
-    while (!name.empty() && name.back() == '.') name.pop_back();
+    while (!name.empty() && name.back() == '.')
+        name.pop_back();
     return name;
 }
 
@@ -52,7 +53,9 @@ std::set<std::string> namesAfter(const std::string& text, const std::string& pre
     return names;
 }
 
-std::string tutorialText() { return readFile(kSource / "docs/TUTORIAL.md"); }
+std::string tutorialText() {
+    return readFile(kSource / "docs/TUTORIAL.md");
+}
 
 TEST(Tutorial, EverySceneItNamesIsAFileOfScenesTutorial) {
     const std::set<std::string> named = namesAfter(tutorialText(), "scenes/tutorial/");
@@ -86,7 +89,8 @@ std::vector<Step> stepsOf(const std::string& tutorial) {
         const std::size_t next = tutorial.find("\n## ", at + 1);
         const std::string text = tutorial.substr(at + 1, next - at - 1);
         const std::size_t named = text.find(prefix);
-        steps.push_back({named == std::string::npos ? "" : nameAt(text, named + prefix.size()), text});
+        steps.push_back(
+            {named == std::string::npos ? "" : nameAt(text, named + prefix.size()), text});
         at = next;
     }
     return steps;
@@ -94,7 +98,8 @@ std::vector<Step> stepsOf(const std::string& tutorial) {
 
 std::string trimmed(const std::string& line) {
     const std::size_t start = line.find_first_not_of(' ');
-    return start == std::string::npos ? "" : line.substr(start, line.find_last_not_of(' ') + 1 - start);
+    return start == std::string::npos ? ""
+                                      : line.substr(start, line.find_last_not_of(' ') + 1 - start);
 }
 
 // The ```jsonc blocks of a step quote its scene: each of their lines is a line of the file.
@@ -109,9 +114,11 @@ TEST(Tutorial, EveryExcerptIsInTheSceneOfItsStep) {
             ++blocks;
             std::set<std::string> lines;
             std::istringstream file(readFile(kTutorial / step.scene));
-            for (std::string line; std::getline(file, line);) lines.insert(trimmed(line));
+            for (std::string line; std::getline(file, line);)
+                lines.insert(trimmed(line));
             const std::size_t start = at + fence.size();
-            std::istringstream block(step.text.substr(start, step.text.find("```\n", start) - start));
+            std::istringstream block(
+                step.text.substr(start, step.text.find("```\n", start) - start));
             for (std::string line; std::getline(block, line);)
                 EXPECT_TRUE(lines.count(trimmed(line))) << step.scene << ": " << line;
         }
@@ -136,10 +143,10 @@ protected:
         for (const std::string& name : scenesOfTheFolder()) {
             const std::string output = fs::path(name).replace_extension(".pfm").string();
             Render render;
-            render.run = runLancer({(kTutorial / name).string(), "-o", output, "--width",
-                                    std::to_string(kWidth), "--height", std::to_string(kHeight),
-                                    "--spp", "1"},
-                                   folder.path());
+            render.run = runLancer(
+                {(kTutorial / name).string(), "-o", output, "--width", std::to_string(kWidth),
+                 "--height", std::to_string(kHeight), "--spp", "1"},
+                folder.path());
             if (render.run.exitStatus == 0) render.image = loadImage(folder / output);
             renders_->emplace(name, std::move(render));
         }
@@ -187,9 +194,11 @@ Image::Rgb meanOf(const Image& image, int x0, int y0, int x1, int y1) {
     Image::Rgb sum{0, 0, 0};
     for (int y = y0; y < y1; ++y)
         for (int x = x0; x < x1; ++x)
-            for (int c = 0; c < 3; ++c) sum[c] += image.at(x, y)[c];
+            for (int c = 0; c < 3; ++c)
+                sum[c] += image.at(x, y)[c];
     const float count = static_cast<float>((x1 - x0) * (y1 - y0));
-    for (float& value : sum) value /= count;
+    for (float& value : sum)
+        value /= count;
     return sum;
 }
 
@@ -215,7 +224,8 @@ TEST_F(TutorialRender, TheCornellBoxCeilingIsLitByTheWallsAndTakesTheirColours) 
                          "--spp", "1", "--integrator", "path", "--max-depth", "1"})
             .image;
     for (const Image::Rgb& end : {meanOf(direct, 8, 1, 12, 4), meanOf(direct, 28, 1, 32, 4)})
-        for (int c = 0; c < 3; ++c) EXPECT_EQ(end[c], 0.0f) << c;
+        for (int c = 0; c < 3; ++c)
+            EXPECT_EQ(end[c], 0.0f) << c;
 }
 
 }  // namespace
