@@ -228,6 +228,10 @@ private:
     // A light's "samples": the Whitted integrator's shadow rays towards it per shading point.
     int readShadowSamples(const Node& node) const;
     void loadQuadLight(const Node& node, const char* what);
+    // A warning for each quad light with no bounded surface on its lit side (a beginner's trap:
+    // its edges in the wrong order), once every shape is in the scene. Conservative: a shape
+    // counts as lit if its bounding box reaches in front, and infinite planes count as lit.
+    void warnOfLightsFacingAway() const;
     void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
     const Material* emitterOf(const Color& radiance);
@@ -278,6 +282,15 @@ private:
     std::map<std::string, Group> groups_;
     std::map<std::string, std::string> groupPlaces_;
     std::vector<std::string> groupsBeingRead_;  // the groups placing the one being read
+    // The quad lights, for warnOfLightsFacingAway: the light, its surface, a point of its plane
+    // and the normal of its lit side.
+    struct OneSidedLight {
+        Node node;
+        const Shape* surface;
+        Vec3 point;
+        Vec3 normal;
+    };
+    std::vector<OneSidedLight> oneSidedLights_;
     const Material* defaultMaterial_ = nullptr;
     // Each model and texture file is loaded once, however many objects use it.
     std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
@@ -493,6 +506,7 @@ Scene SceneLoader::Reader::load() {
     // The groups never placed are read too, so that their mistakes are found.
     for (auto& [name, group] : groups_)
         if (!group.shapes) readGroup(name, group);
+    warnOfLightsFacingAway();
     scene_.buildAccelerationStructure();
     scene_.statistics().loadSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -1130,8 +1144,33 @@ void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
              "(the quad has no area)");
     const Color radiance = readColor(require(node, "radiance", what));
     auto surface = std::make_unique<Quad>(corner, edge1, edge2, emitterOf(radiance));
+    oneSidedLights_.push_back({node, surface.get(), corner, cross(edge1, edge2)});
     auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
     addAreaLight(node, std::move(surface), std::move(light));
+}
+
+void SceneLoader::Reader::warnOfLightsFacingAway() const {
+    if (!scene_.unboundedShapes().empty()) return;
+    for (const OneSidedLight& light : oneSidedLights_) {
+        const Vec3 n = normalize(light.normal);
+        const auto lit = [&](const std::unique_ptr<Shape>& shape) {
+            if (shape.get() == light.surface) return false;
+            const Bounds3 box = shape->bounds();
+            const Vec3 center = 0.5f * (box.min + box.max);
+            const Vec3 halfSize = 0.5f * box.diagonal();
+            const float farthest = dot(center - light.point, n) + dot(halfSize, abs(n));
+            // A box that only touches the plane (a wall meeting the light's edge) is behind it;
+            // rounding of the coordinates must not put it in front.
+            const float touching = 1e-5f * (maxComponent(max(abs(box.min), abs(box.max))) +
+                                            maxComponent(abs(light.point)));
+            return farthest > touching;
+        };
+        const auto& shapes = scene_.boundedShapes();
+        if (std::none_of(shapes.begin(), shapes.end(), lit))
+            warn(light.node,
+                 "the quad light faces away from every surface of the scene: it shines only on "
+                 "the side \"edge1\" x \"edge2\" faces (swap the edges to turn it over)");
+    }
 }
 
 void SceneLoader::Reader::loadSphereLight(const Node& node, const char* what) {
