@@ -192,14 +192,14 @@ private:
     // An instance of each shape of the group the object names, placed by its transform.
     Shapes loadGroupObject(const Node& node, const char* what,
                            const std::optional<Transform>& transform);
-    // A named group of objects: read once, when first placed (or at the end if never placed).
+    // A named group of objects, read once.
     struct Group {
         Node objects;
         std::optional<std::vector<std::shared_ptr<const Shape>>> shapes;  // once read
         std::size_t instancedTriangles = 0;  // what each placement draws
     };
-    // The group the string at `name` names, read if not yet; a group placing itself, directly
-    // or through others, is an error.
+    // The group the string at `name` names, read if not yet (a group placed by a group read
+    // before it); a group placing itself, directly or through others, is an error.
     const Group& groupNamed(const Node& name);
     void readGroup(const std::string& name, Group& group);
     static std::unique_ptr<Shape> placed(std::unique_ptr<Shape> shape,
@@ -501,11 +501,13 @@ Scene SceneLoader::Reader::load() {
     fragments.push_back(root);
     for (const Node& fragment : fragments)
         loadDefinitions(fragment);
-    for (const Node& fragment : fragments)
-        loadContents(fragment);
-    // The groups never placed are read too, so that their mistakes are found.
+    // Every group is read before any object, outside any csg (whose material its objects would
+    // otherwise take), and so is the same wherever it is placed; one never placed is read too,
+    // so that its mistakes are found.
     for (auto& [name, group] : groups_)
         if (!group.shapes) readGroup(name, group);
+    for (const Node& fragment : fragments)
+        loadContents(fragment);
     warnOfLightsFacingAway();
     scene_.buildAccelerationStructure();
     scene_.statistics().loadSeconds =
