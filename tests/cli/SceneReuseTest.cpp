@@ -166,5 +166,26 @@ TEST(CliGroup, PlacesGroupsThatPlaceGroups) {
               kRounding);
 }
 
+TEST(CliGroup, ObjectsWithoutAMaterialKeepTheDefaultInACsg) {
+    // A csg's material is that of its children without one, but not of a group's objects: they
+    // are the same wherever the group is placed.
+    json grouped = groupScene();
+    grouped["groups"]["ball"] =
+        parse(R"([ { "type": "sphere", "center": [0.6, 0.6, 0], "radius": 0.5 } ])");
+    grouped["objects"].push_back(parse(R"({ "type": "csg", "operation": "union", "material": "red",
+      "objects": [ { "type": "box", "min": [-0.6, 0, -0.4], "max": [0.4, 0.8, 0.4] },
+                   { "type": "group", "group": "ball" } ] })"));
+    // Written out, the sphere names a material of the default's values.
+    json written = groupScene();
+    written["materials"]["plain"] = json::object();
+    written["objects"].push_back(parse(R"({ "type": "csg", "operation": "union", "material": "red",
+      "objects": [ { "type": "box", "min": [-0.6, 0, -0.4], "max": [0.4, 0.8, 0.4] },
+                   { "type": "sphere", "center": [0.6, 0.6, 0], "radius": 0.5,
+                     "material": "plain", "transform": { "translate": [0, 0, 0] } } ] })"));
+    EXPECT_LE(maxAbsoluteDifference(renderScene(grouped, kSmall).image,
+                                    renderScene(written, kSmall).image),
+              kRounding);
+}
+
 }  // namespace
 }  // namespace lancer::test
