@@ -376,7 +376,7 @@ const ErrorCase kErrorCases[] = {
      .with = R"("type": @"prism")",
      .mentions =
          {R"(unknown object type "prism")",
-          R"(expected "sphere", "plane", "triangle", "mesh", "gltf", "disk", "box", "cylinder", "cone", "torus" or "csg")"}},
+          R"(expected "sphere", "plane", "triangle", "mesh", "gltf", "disk", "box", "cylinder", "cone", "torus", "csg" or "group")"}},
     {.name = "UnknownLightTypeListsTheValidOnes",
      .replace = R"("type": "point")",
      .with = R"("type": @"area")",
