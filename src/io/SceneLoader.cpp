@@ -228,9 +228,9 @@ private:
     // A light's "samples": the Whitted integrator's shadow rays towards it per shading point.
     int readShadowSamples(const Node& node) const;
     void loadQuadLight(const Node& node, const char* what);
-    // A warning for each quad light with no bounded surface on its lit side (a beginner's trap:
-    // its edges in the wrong order), once every shape is in the scene. Conservative: a shape
-    // counts as lit if its bounding box reaches in front, and infinite planes count as lit.
+    // A warning for each quad light with every other bounded surface behind it (a beginner's
+    // trap: its edges in the wrong order), once every shape is in the scene. Conservative: a
+    // shape counts as lit if its bounding box reaches in front, and infinite planes count as lit.
     void warnOfLightsFacingAway() const;
     void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
@@ -1155,8 +1155,8 @@ void SceneLoader::Reader::warnOfLightsFacingAway() const {
     if (!scene_.unboundedShapes().empty()) return;
     for (const OneSidedLight& light : oneSidedLights_) {
         const Vec3 n = normalize(light.normal);
-        const auto lit = [&](const std::unique_ptr<Shape>& shape) {
-            if (shape.get() == light.surface) return false;
+        const auto behind = [&](const std::unique_ptr<Shape>& shape) {
+            if (shape.get() == light.surface) return true;
             const Bounds3 box = shape->bounds();
             const Vec3 center = 0.5f * (box.min + box.max);
             const Vec3 halfSize = 0.5f * box.diagonal();
@@ -1165,10 +1165,11 @@ void SceneLoader::Reader::warnOfLightsFacingAway() const {
             // rounding of the coordinates must not put it in front.
             const float touching = 1e-5f * (maxComponent(max(abs(box.min), abs(box.max))) +
                                             maxComponent(abs(light.point)));
-            return farthest > touching;
+            return farthest <= touching;
         };
+        // A light alone in the scene (its own surface its only shape) has nothing to face.
         const auto& shapes = scene_.boundedShapes();
-        if (std::none_of(shapes.begin(), shapes.end(), lit))
+        if (shapes.size() > 1 && std::all_of(shapes.begin(), shapes.end(), behind))
             warn(light.node,
                  "the quad light faces away from every surface of the scene: it shines only on "
                  "the side \"edge1\" x \"edge2\" faces (swap the edges to turn it over)");

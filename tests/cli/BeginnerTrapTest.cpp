@@ -98,14 +98,16 @@ TEST(CliBeginnerTrap, QuadLightFacingAwayFromEverySurfaceWarnsOnceAtTheLight) {
 
 TEST(CliBeginnerTrap, QuadLightWithASurfaceOnItsLitSideDoesNotWarn) {
     // Shining into the box; shining up at a ceiling; shining up beside an infinite floor, which
-    // reaches every side of the light (planes are not looked into).
+    // reaches every side of the light (planes are not looked into); alone in the scene.
     nlohmann::json ceiling = openBoxScene(true);
     ceiling["objects"].push_back(
         nlohmann::json::parse(R"({ "type": "box", "min": [-1, 2.5, -1], "max": [1, 2.6, 1] })"));
     nlohmann::json floor = openBoxScene(true);
     floor["objects"].push_back(
         nlohmann::json::parse(R"({ "type": "plane", "point": [0, -1, 0], "normal": [0, 1, 0] })"));
-    for (const nlohmann::json& scene : {openBoxScene(false), ceiling, floor})
+    nlohmann::json alone = openBoxScene(true);
+    alone.erase("objects");
+    for (const nlohmann::json& scene : {openBoxScene(false), ceiling, floor, alone})
         EXPECT_TRUE(warningsOf(scene).empty()) << scene["objects"].dump();
 }
 
