@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <optional>
+#include <set>
 #include <sstream>
 
 #include "accel/Mesh.h"
@@ -84,11 +85,13 @@ constexpr int kDefaultShadowSamples = 16;
 class SceneLoader::Reader {
     using json = nlohmann::json;
 
-    // A value of the document, where it is (a JSON pointer) and what to call it in messages.
+    // A value of a document (the scene file or a file it includes), where it is (a JSON
+    // pointer) and what to call it in messages.
     struct Node {
         const json& value;
         std::string pointer;
         std::string name;
+        const JsonDocument* document;
 
         Node operator[](const std::string& key) const;  // an object's member
         Node at(std::size_t index) const;               // an array's element
@@ -96,19 +99,30 @@ class SceneLoader::Reader {
     };
 
 public:
-    Reader(const JsonDocument& doc, std::filesystem::path baseDir,
-           std::vector<std::string>& warnings);
+    Reader(const JsonDocument& doc, std::vector<std::string>& warnings);
     Scene load();
 
 private:
     friend class SceneLoader;  // its vocabulary() lists the tables
 
+    // The files `fragment` includes, each after those it includes itself, appended to
+    // `fragments` (a file already read is not read again).
+    void readIncludes(const Node& fragment, std::vector<Node>& fragments);
+    // What a scene file or an included one defines by name: its materials and groups.
+    void loadDefinitions(const Node& fragment);
+    // What it places: its objects and lights.
+    void loadContents(const Node& fragment);
     void loadRender(const Node& node);
     void loadFilter(const Node& node);
     void loadAdaptive(const Node& render, const Node& node);
     void loadRadiosity(const Node& node);
     void loadCamera(const Node& node);
     void loadMaterials(const Node& node);
+    void loadGroups(const Node& node);
+    // Names defined twice (in one file or two) are an error naming both places.
+    void checkFirstDefinition(const std::map<std::string, std::string>& placesOfNames,
+                              const std::string& name, const Node& definition,
+                              const std::string& what) const;
     std::unique_ptr<Material> loadMaterial(const Node& node);
     // A warning for each reflectance written as 0-255 (a beginner's trap).
     void warnOfByteColours(const Node& material) const;
@@ -118,12 +132,14 @@ private:
     // linear, as roughness is).
     std::shared_ptr<const Texture> loadTexture(
         const Node& node, ImageReader::Content content = ImageReader::Content::Color);
+    // The shapes an object makes: one, or none (left out with a warning), or a group's.
+    using Shapes = std::vector<std::unique_ptr<Shape>>;
     // A type of the "objects" or "lights" array, and the member reading its keys.
     struct ObjectType {
         const char* name;
         const char* what;  // "a sphere": the object, in messages
-        std::unique_ptr<Shape> (Reader::*load)(const Node& node, const char* what,
-                                               const std::optional<Transform>& transform);
+        Shapes (Reader::*load)(const Node& node, const char* what,
+                               const std::optional<Transform>& transform);
     };
     // An object's keys, read for the class it makes.
     class ObjectParameters;
@@ -157,30 +173,42 @@ private:
     static const Registry<CameraType>& cameraTypes();
 
     void loadObject(const Node& node);
-    // The shape an element of "objects" (or of a csg's) makes, placed by its transform; null
-    // for one left out with a warning.
-    std::unique_ptr<Shape> readObject(const Node& node);
+    // The shapes an element of "objects" (or of a csg's, or of a group's) makes, placed by its
+    // transform.
+    Shapes readObject(const Node& node);
     // A shape that reads its own keys: ShapeType::keys() and ShapeType::create(parameters,
     // material).
     template <typename ShapeType>
-    std::unique_ptr<Shape> loadShape(const Node& node, const char* what,
-                                     const std::optional<Transform>& transform);
-    std::unique_ptr<Shape> loadTriangle(const Node& node, const char* what,
-                                        const std::optional<Transform>& transform);
-    std::unique_ptr<Shape> loadMeshObject(const Node& node, const char* what,
-                                          const std::optional<Transform>& transform);
-    std::unique_ptr<Shape> loadGltfObject(const Node& node, const char* what,
-                                          const std::optional<Transform>& transform);
+    Shapes loadShape(const Node& node, const char* what, const std::optional<Transform>& transform);
+    Shapes loadTriangle(const Node& node, const char* what,
+                        const std::optional<Transform>& transform);
+    Shapes loadMeshObject(const Node& node, const char* what,
+                          const std::optional<Transform>& transform);
+    Shapes loadGltfObject(const Node& node, const char* what,
+                          const std::optional<Transform>& transform);
     // An instance of the model that the object's "file" names, read by `read` ("model" names it
     // in messages), with the object's material if it has one, else the model's own.
     using ModelReader = std::function<std::shared_ptr<TriangleMesh>(const std::filesystem::path&)>;
-    std::unique_ptr<Shape> loadModelObject(const Node& node, const char* what,
-                                           const std::optional<Transform>& transform,
-                                           const std::string& model, const ModelReader& read);
-    std::unique_ptr<Shape> loadCsg(const Node& node, const char* what,
-                                   const std::optional<Transform>& transform);
+    Shapes loadModelObject(const Node& node, const char* what,
+                           const std::optional<Transform>& transform, const std::string& model,
+                           const ModelReader& read);
+    Shapes loadCsg(const Node& node, const char* what, const std::optional<Transform>& transform);
+    // An instance of each shape of the group the object names, placed by its transform.
+    Shapes loadGroupObject(const Node& node, const char* what,
+                           const std::optional<Transform>& transform);
+    // A named group of objects, read once.
+    struct Group {
+        Node objects;
+        std::optional<std::vector<std::shared_ptr<const Shape>>> shapes;  // once read
+        std::size_t instancedTriangles = 0;  // what each placement draws
+    };
+    // The group the string at `name` names, read if not yet (a group placed by a group read
+    // before it); a group placing itself, directly or through others, is an error.
+    const Group& groupNamed(const Node& name);
+    void readGroup(const std::string& name, Group& group);
     static std::unique_ptr<Shape> placed(std::unique_ptr<Shape> shape,
                                          const std::optional<Transform>& transform);
+    static Shapes only(std::unique_ptr<Shape> shape);
     // `smooth`: the threshold angle of SmoothingByAngle, if the object asks for it.
     std::shared_ptr<const Mesh> loadMesh(const Node& file, const std::string& model,
                                          const ModelReader& read,
@@ -205,6 +233,10 @@ private:
     // A light's "samples": the Whitted integrator's shadow rays towards it per shading point.
     int readShadowSamples(const Node& node) const;
     void loadQuadLight(const Node& node, const char* what);
+    // A warning for each quad light with every other bounded surface behind it (a beginner's
+    // trap: its edges in the wrong order), once every shape is in the scene. Conservative: a
+    // shape counts as lit if its bounding box reaches in front, and infinite planes count as lit.
+    void warnOfLightsFacingAway() const;
     void loadSphereLight(const Node& node, const char* what);
     // A material that emits `radiance` and reflects nothing: the visible surface of an area light.
     const Material* emitterOf(const Color& radiance);
@@ -218,6 +250,10 @@ private:
     template <typename Entry>
     const Entry& lookUp(const Registry<Entry>& table, const Node& name,
                         const std::string& what) const;
+    // The folder that relative paths in the node's file start from.
+    static std::filesystem::path folderOf(const Node& node);
+    // "file:line:col" of an object member's key.
+    static std::string placeOfKey(const Node& node);
     [[noreturn]] void fail(const Node& node, const std::string& message) const;
     [[noreturn]] void failAtKey(const Node& node, const std::string& message) const;
     void warn(const Node& node, const std::string& message) const;
@@ -237,11 +273,29 @@ private:
     Vec2 readVec2(const Node& node) const;
     Color readColor(const Node& node) const;
 
-    const JsonDocument& doc_;
-    std::filesystem::path baseDir_;  // relative paths in the scene start here
+    const JsonDocument& doc_;  // the scene file
+    // The files it includes, and those they include (Nodes point into them).
+    std::vector<std::unique_ptr<const JsonDocument>> included_;
+    // Each file read, by its canonical path; those on the way from the scene file to the one
+    // being read are in includeChain_ (shown as named), where finding one again is a cycle.
+    std::set<std::string> filesRead_;
+    std::vector<std::pair<std::string, std::string>> includeChain_;
     std::vector<std::string>& warnings_;
     Scene scene_;
     std::map<std::string, const Material*> materials_;
+    std::map<std::string, std::string> materialPlaces_;  // where each was defined
+    std::map<std::string, Group> groups_;
+    std::map<std::string, std::string> groupPlaces_;
+    std::vector<std::string> groupsBeingRead_;  // the groups placing the one being read
+    // The quad lights, for warnOfLightsFacingAway: the light, its surface, a point of its plane
+    // and the normal of its lit side.
+    struct OneSidedLight {
+        Node node;
+        const Shape* surface;
+        Vec3 point;
+        Vec3 normal;
+    };
+    std::vector<OneSidedLight> oneSidedLights_;
     const Material* defaultMaterial_ = nullptr;
     // Each model and texture file is loaded once, however many objects use it.
     std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
@@ -322,6 +376,7 @@ const Registry<SceneLoader::Reader::ObjectType>& SceneLoader::Reader::objectType
         {"cone", "a cone", &Reader::loadShape<Cone>},
         {"torus", "a torus", &Reader::loadShape<Torus>},
         {"csg", "a csg", &Reader::loadCsg},
+        {"group", "a group", &Reader::loadGroupObject},
     };
     return types;
 }
@@ -363,12 +418,12 @@ const Registry<SceneLoader::Reader::CameraType>& SceneLoader::Reader::cameraType
 }
 
 SceneLoader::Reader::Node SceneLoader::Reader::Node::operator[](const std::string& key) const {
-    return {value.at(key), JsonDocument::child(pointer, key), inQuotes(key)};
+    return {value.at(key), JsonDocument::child(pointer, key), inQuotes(key), document};
 }
 
 SceneLoader::Reader::Node SceneLoader::Reader::Node::at(std::size_t index) const {
     return {value.at(index), JsonDocument::child(pointer, index),
-            "element " + std::to_string(index) + " of " + name};
+            "element " + std::to_string(index) + " of " + name, document};
 }
 
 std::vector<SceneLoader::Vocabulary> SceneLoader::vocabulary() {
@@ -382,7 +437,11 @@ std::vector<SceneLoader::Vocabulary> SceneLoader::vocabulary() {
             {"integrators", IntegratorRegistry::table().names()}};
 }
 
-Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+namespace {
+
+// The text of a scene file (or of a file it includes); InputError naming the file if it cannot be
+// read.
+std::string readSceneText(const std::filesystem::path& path) {
     InputFile::check(path, "a scene file", "scene files", InputFile::kMaxSceneBytes);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw InputError(path.string(), "cannot open the scene file (does it exist?)");
@@ -398,26 +457,42 @@ Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::
         if (text.size() > InputFile::kMaxSceneBytes)
             throw InputFile::tooLarge(path, "scene files", InputFile::kMaxSceneBytes);
     }
-    return loadString(text, path.string(), warnings);
+    return text;
+}
+
+// What tells files apart however a path names them: the canonical path (or the path as given,
+// when the file system cannot say).
+std::string identityOf(const std::filesystem::path& path) {
+    std::error_code error;
+    const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+    return (error ? path : canonical).string();
+}
+
+// The top-level keys of an included file, and those only the scene file may give.
+const std::vector<std::string> kFragmentKeys{"include", "materials", "groups", "objects", "lights"};
+const std::vector<std::string> kSceneFileKeys{"render",      "camera",  "background",
+                                              "environment", "ambient", "radiosity"};
+
+}  // namespace
+
+Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
+    return loadString(readSceneText(path), path.string(), warnings);
 }
 
 Scene SceneLoader::loadString(const std::string& text, const std::string& fileName,
                               std::vector<std::string>& warnings) {
     const JsonDocument doc = JsonDocument::parse(text, fileName);
-    return Reader(doc, std::filesystem::path(fileName).parent_path(), warnings).load();
+    return Reader(doc, warnings).load();
 }
 
-SceneLoader::Reader::Reader(const JsonDocument& doc, std::filesystem::path baseDir,
-                            std::vector<std::string>& warnings)
-    : doc_(doc), baseDir_(std::move(baseDir)), warnings_(warnings) {}
+SceneLoader::Reader::Reader(const JsonDocument& doc, std::vector<std::string>& warnings)
+    : doc_(doc), warnings_(warnings) {}
 
 Scene SceneLoader::Reader::load() {
     const auto start = std::chrono::steady_clock::now();
-    const Node root{doc_.root(), "", "the scene"};
+    const Node root{doc_.root(), "", "the scene", &doc_};
     requireObject(root, "the scene");
-    checkKeys(root, "the scene",
-              {"render", "camera", "background", "environment", "ambient", "materials", "objects",
-               "lights", "radiosity"});
+    checkKeys(root, "the scene", withKeys(kSceneFileKeys, kFragmentKeys));
 
     defaultMaterial_ = scene_.addMaterial(std::make_unique<BlinnPhongMaterial>());
     if (root.has("render")) loadRender(root["render"]);
@@ -427,23 +502,91 @@ Scene SceneLoader::Reader::load() {
     if (root.has("background")) scene_.setBackground(readColor(root["background"]));
     if (root.has("environment")) loadEnvironment(root);
     if (root.has("ambient")) scene_.setAmbient(readColor(root["ambient"]));
-    if (root.has("materials")) loadMaterials(root["materials"]);
-    if (root.has("objects")) {
-        const Node objects = root["objects"];
-        requireArray(objects, "\"objects\"");
-        for (std::size_t i = 0; i < objects.value.size(); ++i)
-            loadObject(objects.at(i));
-    }
-    if (root.has("lights")) {
-        const Node lights = root["lights"];
-        requireArray(lights, "\"lights\"");
-        for (std::size_t i = 0; i < lights.value.size(); ++i)
-            loadLight(lights.at(i));
-    }
+    // The included files' contents come before the scene file's own; every name is defined
+    // before any object is read, so that an object may use what any file defines.
+    std::vector<Node> fragments;
+    const std::string sceneFile = identityOf(doc_.fileName());
+    filesRead_.insert(sceneFile);
+    includeChain_.emplace_back(sceneFile, doc_.fileName());
+    readIncludes(root, fragments);
+    fragments.push_back(root);
+    for (const Node& fragment : fragments)
+        loadDefinitions(fragment);
+    // Every group is read before any object, outside any csg (whose material its objects would
+    // otherwise take), and so is the same wherever it is placed; one never placed is read too,
+    // so that its mistakes are found.
+    for (auto& [name, group] : groups_)
+        if (!group.shapes) readGroup(name, group);
+    for (const Node& fragment : fragments)
+        loadContents(fragment);
+    warnOfLightsFacingAway();
     scene_.buildAccelerationStructure();
     scene_.statistics().loadSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return std::move(scene_);
+}
+
+void SceneLoader::Reader::readIncludes(const Node& fragment, std::vector<Node>& fragments) {
+    if (!fragment.has("include")) return;
+    const Node list = fragment["include"];
+    requireArray(list, "\"include\"");
+    for (std::size_t i = 0; i < list.value.size(); ++i) {
+        const Node entry = list.at(i);
+        const std::filesystem::path path = (folderOf(entry) / readString(entry)).lexically_normal();
+        const std::string identity = identityOf(path);
+        const auto onChain = std::find_if(includeChain_.begin(), includeChain_.end(),
+                                          [&](const auto& link) { return link.first == identity; });
+        if (onChain != includeChain_.end()) {
+            std::string cycle;
+            for (auto link = onChain; link != includeChain_.end(); ++link)
+                cycle += link->second + " includes ";
+            fail(entry, "include cycle: " + cycle + path.string());
+        }
+        // A file included twice (a library of materials that several files use) is read once.
+        if (!filesRead_.insert(identity).second) continue;
+        std::string text;
+        try {
+            text = readSceneText(path);
+        } catch (const InputError& e) {
+            fail(entry, "include " + inQuotes(path.string()) + ": " + e.message());
+        }
+        // Its own mistakes are told at their place in it.
+        const JsonDocument& document = *included_.emplace_back(
+            std::make_unique<const JsonDocument>(JsonDocument::parse(text, path.string())));
+        const Node root{document.root(), "", "the included file", &document};
+        requireObject(root, "an included file");
+        for (const std::string& key : kSceneFileKeys)
+            if (root.has(key))
+                failAtKey(root[key], inQuotes(key) +
+                                         " belongs to the scene file itself: an included file "
+                                         "may give " +
+                                         quotedNames(kFragmentKeys));
+        checkKeys(root, "an included file", kFragmentKeys);
+        includeChain_.emplace_back(identity, path.string());
+        readIncludes(root, fragments);
+        includeChain_.pop_back();
+        fragments.push_back(root);
+    }
+}
+
+void SceneLoader::Reader::loadDefinitions(const Node& fragment) {
+    if (fragment.has("materials")) loadMaterials(fragment["materials"]);
+    if (fragment.has("groups")) loadGroups(fragment["groups"]);
+}
+
+void SceneLoader::Reader::loadContents(const Node& fragment) {
+    if (fragment.has("objects")) {
+        const Node objects = fragment["objects"];
+        requireArray(objects, "\"objects\"");
+        for (std::size_t i = 0; i < objects.value.size(); ++i)
+            loadObject(objects.at(i));
+    }
+    if (fragment.has("lights")) {
+        const Node lights = fragment["lights"];
+        requireArray(lights, "\"lights\"");
+        for (std::size_t i = 0; i < lights.value.size(); ++i)
+            loadLight(lights.at(i));
+    }
 }
 
 void SceneLoader::Reader::loadRender(const Node& node) {
@@ -572,8 +715,30 @@ void SceneLoader::Reader::loadCamera(const Node& node) {
 
 void SceneLoader::Reader::loadMaterials(const Node& node) {
     requireObject(node, "\"materials\"");
-    for (const auto& [name, value] : node.value.items())
+    for (const auto& [name, value] : node.value.items()) {
+        checkFirstDefinition(materialPlaces_, name, node[name], "material");
+        materialPlaces_[name] = placeOfKey(node[name]);
         materials_[name] = scene_.addMaterial(loadMaterial(node[name]));
+    }
+}
+
+void SceneLoader::Reader::loadGroups(const Node& node) {
+    requireObject(node, "\"groups\"");
+    for (const auto& [name, value] : node.value.items()) {
+        const Node objects = node[name];
+        requireArray(objects, "group " + objects.name);
+        checkFirstDefinition(groupPlaces_, name, objects, "group");
+        groupPlaces_[name] = placeOfKey(objects);
+        groups_.emplace(name, Group{objects, std::nullopt, 0});
+    }
+}
+
+void SceneLoader::Reader::checkFirstDefinition(
+    const std::map<std::string, std::string>& placesOfNames, const std::string& name,
+    const Node& definition, const std::string& what) const {
+    if (const auto it = placesOfNames.find(name); it != placesOfNames.end())
+        failAtKey(definition,
+                  what + " " + inQuotes(name) + " is defined twice: here and at " + it->second);
 }
 
 std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
@@ -645,7 +810,7 @@ std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTextureFile(
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageFile(const Node& file,
                                                                   const std::string& what,
                                                                   ImageReader::Content content) {
-    const std::filesystem::path path = baseDir_ / readString(file);
+    const std::filesystem::path path = folderOf(file) / readString(file);
     try {
         return loadImageTexture(path, content);
     } catch (const InputError& e) {
@@ -675,10 +840,11 @@ const Material* SceneLoader::Reader::materialOf(const Node& object) {
 }
 
 void SceneLoader::Reader::loadObject(const Node& node) {
-    if (std::unique_ptr<Shape> shape = readObject(node)) scene_.addShape(std::move(shape));
+    for (std::unique_ptr<Shape>& shape : readObject(node))
+        scene_.addShape(std::move(shape));
 }
 
-std::unique_ptr<Shape> SceneLoader::Reader::readObject(const Node& node) {
+SceneLoader::Reader::Shapes SceneLoader::Reader::readObject(const Node& node) {
     requireObject(node, "an object");
     const ObjectType& entry =
         lookUp(objectTypes(), require(node, "type", "an object"), "object type");
@@ -688,11 +854,11 @@ std::unique_ptr<Shape> SceneLoader::Reader::readObject(const Node& node) {
 }
 
 template <typename ShapeType>
-std::unique_ptr<Shape> SceneLoader::Reader::loadShape(const Node& node, const char* what,
-                                                      const std::optional<Transform>& transform) {
+SceneLoader::Reader::Shapes SceneLoader::Reader::loadShape(
+    const Node& node, const char* what, const std::optional<Transform>& transform) {
     checkKeys(node, what, withKeys({"type", "material", "transform"}, ShapeType::keys()));
-    return placed(ShapeType::create(ObjectParameters(*this, node, what), materialOf(node)),
-                  transform);
+    return only(placed(ShapeType::create(ObjectParameters(*this, node, what), materialOf(node)),
+                       transform));
 }
 
 template <typename LightType>
@@ -701,7 +867,7 @@ void SceneLoader::Reader::loadLight(const Node& node, const char* what) {
     scene_.addLight(LightType::create(ObjectParameters(*this, node, what)));
 }
 
-std::unique_ptr<Shape> SceneLoader::Reader::loadTriangle(
+SceneLoader::Reader::Shapes SceneLoader::Reader::loadTriangle(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
     checkKeys(node, what, {"type", "vertices", "normals", "uvs", "material", "transform"});
     const auto readThree = [&](const std::string& key, auto read) {
@@ -723,14 +889,14 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadTriangle(
     auto triangle = std::make_unique<Triangle>(vertices, materialOf(node), normals, uvs);
     if (!(triangle->area(0) > 0)) {
         warn(node["vertices"], "triangle has zero area and is left out");
-        return nullptr;
+        return {};
     }
     ++scene_.statistics().uniqueTriangles;
     ++scene_.statistics().instancedTriangles;
-    return placed(std::move(triangle), transform);
+    return only(placed(std::move(triangle), transform));
 }
 
-std::unique_ptr<Shape> SceneLoader::Reader::loadMeshObject(
+SceneLoader::Reader::Shapes SceneLoader::Reader::loadMeshObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
     const auto readObj = [this](const std::filesystem::path& path) {
         const auto loadTexture = [this](const std::filesystem::path& p,
@@ -742,7 +908,7 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadMeshObject(
     return loadModelObject(node, what, transform, "mesh", readObj);
 }
 
-std::unique_ptr<Shape> SceneLoader::Reader::loadGltfObject(
+SceneLoader::Reader::Shapes SceneLoader::Reader::loadGltfObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
     const auto readGltf = [this](const std::filesystem::path& path) {
         return GltfLoader::load(path, warnings_);
@@ -750,7 +916,7 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadGltfObject(
     return loadModelObject(node, what, transform, "glTF model", readGltf);
 }
 
-std::unique_ptr<Shape> SceneLoader::Reader::loadModelObject(
+SceneLoader::Reader::Shapes SceneLoader::Reader::loadModelObject(
     const Node& node, const char* what, const std::optional<Transform>& transform,
     const std::string& model, const ModelReader& read) {
     checkKeys(node, what, {"type", "file", "material", "transform", "smooth"});
@@ -764,11 +930,12 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadModelObject(
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
     // Without "material", the model's own materials (an OBJ's .mtl, a glTF's) are used.
     const Material* material = node.has("material") ? materialOf(node) : nullptr;
-    return std::make_unique<Instance>(std::move(mesh), transform.value_or(Transform()), material);
+    return only(
+        std::make_unique<Instance>(std::move(mesh), transform.value_or(Transform()), material));
 }
 
-std::unique_ptr<Shape> SceneLoader::Reader::loadCsg(const Node& node, const char* what,
-                                                    const std::optional<Transform>& transform) {
+SceneLoader::Reader::Shapes SceneLoader::Reader::loadCsg(
+    const Node& node, const char* what, const std::optional<Transform>& transform) {
     checkKeys(node, what, {"type", "operation", "objects", "material", "transform"});
     const auto operation = static_cast<Csg::Operation>(
         ObjectParameters(*this, node, what).choice("operation", Csg::operationNames()));
@@ -784,16 +951,64 @@ std::unique_ptr<Shape> SceneLoader::Reader::loadCsg(const Node& node, const char
     std::vector<std::unique_ptr<Shape>> children;
     for (std::size_t i = 0; i < objects.value.size(); ++i) {
         const Node child = objects.at(i);
-        std::unique_ptr<Shape> shape = readObject(child);
-        if (!shape || !shape->isSolid())
+        Shapes shapes = readObject(child);
+        if (shapes.size() != 1 || !shapes.front()->isSolid())
             fail(child, std::string(lookUp(objectTypes(), child["type"], "object type").what) +
                             " here is not a solid (a closed surface): a csg combines spheres, " +
                             "boxes, closed cylinders and cones, tori, csgs and meshes of closed " +
                             "models");
-        children.push_back(std::move(shape));
+        children.push_back(std::move(shapes.front()));
     }
     defaultMaterial_ = outerDefault;
-    return placed(std::make_unique<Csg>(operation, std::move(children), material), transform);
+    return only(placed(std::make_unique<Csg>(operation, std::move(children), material), transform));
+}
+
+SceneLoader::Reader::Shapes SceneLoader::Reader::loadGroupObject(
+    const Node& node, const char* what, const std::optional<Transform>& transform) {
+    checkKeys(node, what, {"type", "group", "transform"});
+    const Group& group = groupNamed(require(node, "group", what));
+    scene_.statistics().instancedTriangles += group.instancedTriangles;
+    Shapes shapes;
+    for (const std::shared_ptr<const Shape>& shape : *group.shapes)
+        shapes.push_back(std::make_unique<Instance>(shape, transform.value_or(Transform())));
+    return shapes;
+}
+
+const SceneLoader::Reader::Group& SceneLoader::Reader::groupNamed(const Node& name) {
+    const std::string text = readString(name);
+    const auto it = groups_.find(text);
+    if (it == groups_.end()) {
+        std::vector<std::string> names;
+        for (const auto& entry : groups_)
+            names.push_back(entry.first);
+        fail(name, "group " + inQuotes(text) + " is not defined" + didYouMean(text, names) +
+                       (names.empty() ? "; the scene's \"groups\" defines none"
+                                      : "; expected " + quotedNames(names)));
+    }
+    const auto reading = std::find(groupsBeingRead_.begin(), groupsBeingRead_.end(), text);
+    if (reading != groupsBeingRead_.end()) {
+        std::string cycle;
+        for (auto group = reading; group != groupsBeingRead_.end(); ++group)
+            cycle += inQuotes(*group) + " places ";
+        fail(name, "group cycle: " + cycle + inQuotes(text));
+    }
+    if (!it->second.shapes) readGroup(text, it->second);
+    return it->second;
+}
+
+void SceneLoader::Reader::readGroup(const std::string& name, Group& group) {
+    groupsBeingRead_.push_back(name);
+    // Reading the group's objects draws nothing: each placement draws its triangles.
+    std::size_t& drawn = scene_.statistics().instancedTriangles;
+    const std::size_t drawnBefore = drawn;
+    std::vector<std::shared_ptr<const Shape>> shapes;
+    for (std::size_t i = 0; i < group.objects.value.size(); ++i)
+        for (std::unique_ptr<Shape>& shape : readObject(group.objects.at(i)))
+            shapes.push_back(std::move(shape));
+    group.instancedTriangles = drawn - drawnBefore;
+    drawn = drawnBefore;
+    group.shapes = std::move(shapes);
+    groupsBeingRead_.pop_back();
 }
 
 std::unique_ptr<Shape> SceneLoader::Reader::placed(std::unique_ptr<Shape> shape,
@@ -802,11 +1017,17 @@ std::unique_ptr<Shape> SceneLoader::Reader::placed(std::unique_ptr<Shape> shape,
     return std::make_unique<Instance>(std::move(shape), *transform);
 }
 
+SceneLoader::Reader::Shapes SceneLoader::Reader::only(std::unique_ptr<Shape> shape) {
+    Shapes shapes;
+    shapes.push_back(std::move(shape));
+    return shapes;
+}
+
 std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
                                                           const std::string& model,
                                                           const ModelReader& read,
                                                           const std::optional<float>& smooth) {
-    const std::filesystem::path path = baseDir_ / readString(file);
+    const std::filesystem::path path = folderOf(file) / readString(file);
     const std::string key = model + " " + std::filesystem::weakly_canonical(path).string() +
                             (smooth ? " smooth " + std::to_string(*smooth) : "");
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
@@ -910,7 +1131,7 @@ void SceneLoader::Reader::loadEnvironment(const Node& root) {
     requireObject(node, what);
     checkKeys(node, what, EnvironmentLight::keys());
     const Node file = require(node, "file", what);
-    const std::filesystem::path path = baseDir_ / readString(file);
+    const std::filesystem::path path = folderOf(file) / readString(file);
     std::optional<Image> map;
     try {
         map = ImageReader::read(path);
@@ -939,8 +1160,34 @@ void SceneLoader::Reader::loadQuadLight(const Node& node, const char* what) {
              "(the quad has no area)");
     const Color radiance = readColor(require(node, "radiance", what));
     auto surface = std::make_unique<Quad>(corner, edge1, edge2, emitterOf(radiance));
+    oneSidedLights_.push_back({node, surface.get(), corner, cross(edge1, edge2)});
     auto light = std::make_unique<AreaLight>(*surface, 0, radiance);
     addAreaLight(node, std::move(surface), std::move(light));
+}
+
+void SceneLoader::Reader::warnOfLightsFacingAway() const {
+    if (!scene_.unboundedShapes().empty()) return;
+    for (const OneSidedLight& light : oneSidedLights_) {
+        const Vec3 n = normalize(light.normal);
+        const auto behind = [&](const std::unique_ptr<Shape>& shape) {
+            if (shape.get() == light.surface) return true;
+            const Bounds3 box = shape->bounds();
+            const Vec3 center = 0.5f * (box.min + box.max);
+            const Vec3 halfSize = 0.5f * box.diagonal();
+            const float farthest = dot(center - light.point, n) + dot(halfSize, abs(n));
+            // A box that only touches the plane (a wall meeting the light's edge) is behind it;
+            // rounding of the coordinates must not put it in front.
+            const float touching = 1e-5f * (maxComponent(max(abs(box.min), abs(box.max))) +
+                                            maxComponent(abs(light.point)));
+            return farthest <= touching;
+        };
+        // A light alone in the scene (its own surface its only shape) has nothing to face.
+        const auto& shapes = scene_.boundedShapes();
+        if (shapes.size() > 1 && std::all_of(shapes.begin(), shapes.end(), behind))
+            warn(light.node,
+                 "the quad light faces away from every surface of the scene: it shines only on "
+                 "the side \"edge1\" x \"edge2\" faces (swap the edges to turn it over)");
+    }
 }
 
 void SceneLoader::Reader::loadSphereLight(const Node& node, const char* what) {
@@ -980,17 +1227,28 @@ const Entry& SceneLoader::Reader::lookUp(const Registry<Entry>& table, const Nod
     return *entry;
 }
 
+std::filesystem::path SceneLoader::Reader::folderOf(const Node& node) {
+    return std::filesystem::path(node.document->fileName()).parent_path();
+}
+
+std::string SceneLoader::Reader::placeOfKey(const Node& node) {
+    const SourceLocation where = node.document->keyLocation(node.pointer);
+    return node.document->fileName() + ":" + std::to_string(where.line) + ":" +
+           std::to_string(where.column);
+}
+
 void SceneLoader::Reader::fail(const Node& node, const std::string& message) const {
-    throw InputError(doc_.fileName(), doc_.valueLocation(node.pointer), message);
+    throw InputError(node.document->fileName(), node.document->valueLocation(node.pointer),
+                     message);
 }
 
 void SceneLoader::Reader::failAtKey(const Node& node, const std::string& message) const {
-    throw InputError(doc_.fileName(), doc_.keyLocation(node.pointer), message);
+    throw InputError(node.document->fileName(), node.document->keyLocation(node.pointer), message);
 }
 
 void SceneLoader::Reader::warn(const Node& node, const std::string& message) const {
-    const SourceLocation where = doc_.valueLocation(node.pointer);
-    warnings_.push_back(doc_.fileName() + ":" + std::to_string(where.line) + ":" +
+    const SourceLocation where = node.document->valueLocation(node.pointer);
+    warnings_.push_back(node.document->fileName() + ":" + std::to_string(where.line) + ":" +
                         std::to_string(where.column) + ": warning: " + message);
 }
 

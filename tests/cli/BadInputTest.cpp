@@ -52,6 +52,11 @@ std::string gltfScene(const std::string& file) {
     return scene("", "0.5", R"(, { "type": "gltf", "file": ")" + file + R"(" })");
 }
 const std::string kRadiosityScene = scene(R"(, "integrator": "radiosity")");
+// The valid scene including the files of `list` (the text inside the brackets).
+std::string including(const std::string& list) {
+    return scene().insert(2, R"("include": [)" + list + "],\n  ");
+}
+const std::string kSphere = R"({ "type": "sphere", "center": [0, 0, 0], "radius": 1 })";
 
 struct BadInput {
     std::string name;
@@ -104,6 +109,70 @@ const BadInput kBadInputs[] = {
     {"UndefinedMaterial", scene("", "0.5", R"(, { "type": "sphere", "material": "x" })"), kRender,
      R"(material "x" is not defined)"},
     {"NumberAsText", scene(R"(, "max_depth": "nan")"), kRender, R"("max_depth")"},
+    // --- included files: errors name the including file's place, or their own ---
+    {"IncludeMissing", including(R"("lib/missing.json")"), kRender,
+     R"(scene.json:1:15: error: include "lib/missing.json": cannot open the scene file)"},
+    {"IncludeIsAFolder",
+     including(R"("lib")"),
+     kRender,
+     R"(scene.json:1:15: error: include "lib": is a folder, not a scene file)",
+     2,
+     {{"lib/", ""}}},
+    {"IncludeCycle",
+     including(R"("lib/a.json")"),
+     kRender,
+     "lib/b.json:1:15: error: include cycle: lib/a.json includes lib/b.json includes lib/a.json",
+     2,
+     {{"lib/", ""},
+      {"lib/a.json", R"({ "include": ["b.json"] })"},
+      {"lib/b.json", R"({ "include": ["a.json"] })"}}},
+    {"IncludeOfItself", including(R"("scene.json")"), kRender,
+     "scene.json:1:15: error: include cycle: scene.json includes scene.json"},
+    {"MaterialDefinedInTwoFiles",
+     including(R"("lib.json")"),
+     kRender,
+     R"(scene.json:4:18: error: material "m" is defined twice: here and at lib.json:1:18)",
+     2,
+     {{"lib.json", R"({ "materials": { "m": { "diffuse": 1 } } })"}}},
+    {"GroupDefinedInTwoFiles",
+     including(R"("a.json", "b.json")"),
+     kRender,
+     R"(b.json:1:15: error: group "g" is defined twice: here and at a.json:1:15)",
+     2,
+     {{"a.json", R"({ "groups": { "g": [] } })"}, {"b.json", R"({ "groups": { "g": [] } })"}}},
+    {"UnknownGroupInAnIncludedFile",
+     including(R"("lib.json")"),
+     kRender,
+     R"(lib.json:1:44: error: group "tre" is not defined (did you mean "tree"?))",
+     2,
+     {{"lib.json", R"({ "objects": [ { "type": "group", "group": "tre" } ],
+  "groups": { "tree": [] } })"}}},
+    {"GroupCycleAcrossFiles",
+     including(R"("lib.json")"),
+     kRender,
+     R"(lib.json:2:94: error: group cycle: "a" places "b" places "a")",
+     2,
+     {{"lib.json", R"({ "groups": { "a": [ { "type": "group", "group": "b" } ],
+  "b": [ )" + kSphere + R"(, { "type": "group", "group": "a" } ] } })"}}},
+    {"BadValueInAnIncludedFile",
+     including(R"("lib.json")"),
+     kRender,
+     R"(lib.json:2:46: error: "radius" must be greater than 0)",
+     2,
+     {{"lib.json", R"({
+  "objects": [ { "type": "sphere", "radius": -1 } ] })"}}},
+    {"SyntaxErrorInAnIncludedFile",
+     including(R"("lib.json")"),
+     kRender,
+     "lib.json:1:16: error: ",
+     2,
+     {{"lib.json", R"({ "objects": [ } })"}}},
+    {"CameraInAnIncludedFile",
+     including(R"("lib.json")"),
+     kRender,
+     R"(lib.json:1:3: error: "camera" belongs to the scene file itself)",
+     2,
+     {{"lib.json", R"({ "camera": { "position": [0, 0, 5], "look_at": [0, 0, 0] } })"}}},
     // --- models ---
     {"MeshMissing", meshScene("missing.obj"), kRender, "cannot open the OBJ file"},
     {"MeshIsADevice", meshScene("/dev/zero"), kRender, "is a device, not an OBJ file"},

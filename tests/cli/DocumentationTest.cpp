@@ -50,25 +50,39 @@ TEST(Documentation, EveryExampleSceneIsAFileOfScenes) {
     }
 }
 
-// Each object of the example, taken out, changes the picture: none hides behind another.
-TEST(Documentation, TheFormatExampleRendersWithEveryObjectInSight) {
-    const fs::path file = kSource / "scenes/format-example.json";
+// Each object of the example scene `name` of scenes/, taken out, changes the picture: none hides
+// behind another.
+void expectEveryObjectInSight(const std::string& name) {
+    const fs::path file = kSource / "scenes" / name;
     const std::vector<std::string> small{"--width", "96", "--height", "72", "--spp", "1"};
     nlohmann::json scene = nlohmann::json::parse(readFile(file), nullptr, true, true);
-    // The copies are written elsewhere: the model's path is made absolute.
+    // The copies are written elsewhere: the paths of models and includes are made absolute.
+    const auto absolute = [](nlohmann::json& path) {
+        path = (kSource / "scenes" / path.get<std::string>()).string();
+    };
     for (nlohmann::json& object : scene["objects"])
-        if (object.contains("file"))
-            object["file"] = (kSource / "scenes" / object["file"].get<std::string>()).string();
+        if (object.contains("file")) absolute(object["file"]);
+    if (scene.contains("include"))
+        for (nlohmann::json& path : scene["include"])
+            absolute(path);
     const Image whole = renderSceneFile(file, small).image;
     EXPECT_EQ(renderScene(scene, small).image.pixels, whole.pixels);
     for (std::size_t i = 0; i < scene["objects"].size(); ++i) {
         nlohmann::json without = scene;
         without["objects"].erase(i);
         const Image image = renderScene(without, small).image;
-        // At least a few pixels change clearly (the smallest object is the lamp).
+        // At least a few pixels change clearly (the format example's smallest object is the lamp).
         const double unchanged = fractionOfPixelsWithin(image, whole, 0.05, 0);
         EXPECT_LT(unchanged, 1 - 4.0 / (96 * 72)) << scene["objects"][i].dump();
     }
+}
+
+TEST(Documentation, TheFormatExampleRendersWithEveryObjectInSight) {
+    expectEveryObjectInSight("format-example.json");
+}
+
+TEST(Documentation, TheIncludeAndGroupExampleRendersWithEveryObjectInSight) {
+    expectEveryObjectInSight("grove.json");
 }
 
 // The sections of scenes/models/SOURCES.md, "## N. `folder/`: ...", with their text.
