@@ -308,6 +308,14 @@ Image ImageReader::read(const std::filesystem::path& path, Content content) {
     // sRGB-encoded; bitmaps other than 24-bit pass through 24 bits first (expanding palettes and
     // greyscale, dropping alpha), as FreeImage's float conversion misreads 16-bit (RGB 555, 565)
     // ones.
+    if (content == Content::Alpha && FreeImage_IsTransparent(bitmap.get())) {
+        // The alpha channel alone, as a greyscale image (from 32 bits for palettes).
+        if (FreeImage_GetImageType(bitmap.get()) == FIT_BITMAP &&
+            FreeImage_GetBPP(bitmap.get()) != 32)
+            bitmap.reset(FreeImage_ConvertTo32Bits(bitmap.get()));
+        if (bitmap) bitmap.reset(FreeImage_GetChannel(bitmap.get(), FICC_ALPHA));
+        if (!bitmap) throw InputError(name, "cannot read the image's alpha channel");
+    }
     const bool linear = isFloat(FreeImage_GetImageType(bitmap.get()));
     if (FreeImage_GetImageType(bitmap.get()) == FIT_BITMAP && FreeImage_GetBPP(bitmap.get()) != 24)
         bitmap.reset(FreeImage_ConvertTo24Bits(bitmap.get()));
@@ -323,7 +331,7 @@ Image ImageReader::read(const std::filesystem::path& path, Content content) {
             FreeImage_GetScanLine(bitmap.get(), scanlineOfRow(format, y, height));
         for (int x = 0; x < width; ++x) {
             const Color c = floatTexel(type, scanline, x);
-            image.at(x, y) = linear || content == Content::Data
+            image.at(x, y) = linear || content != Content::Color
                                  ? c
                                  : Color(srgbToLinear(c.r), srgbToLinear(c.g), srgbToLinear(c.b));
         }

@@ -16,13 +16,16 @@ namespace lancer {
 // Integer images (8 or 16 bits per channel, palettized, greyscale) of colour hold sRGB-encoded
 // colour and are decoded to linear; those of data (normal and bump maps) are taken as they are,
 // scaled to [0, 1]. Float images (EXR, HDR, PFM, float TIFF) are linear already and kept.
-// Alpha is ignored.
+// Alpha is ignored, but for Content::Alpha.
 class ImageReader {
 public:
     // What an integer image's values are.
     enum class Content {
         Color,  // sRGB-encoded colour (textures of colours)
         Data,   // linear numbers (normal maps, height maps): never sRGB-decoded
+        // A coverage mask (opacity, MTL's map_d): the alpha channel of an image that has one
+        // (RGBA, or a palette with transparency), else its values as Data; grey either way.
+        Alpha,
     };
 
     // The largest image read: beyond it a damaged or hostile header would have FreeImage allocate

@@ -175,6 +175,9 @@ std::shared_ptr<const Material> MtlMaterialConverter::convert(const tinyobj::mat
     }
     auto converted = std::make_shared<BlinnPhongMaterial>(std::move(material));
     converted->setShadingNormalMap(shadingNormalMap(mtl, mtlPath));
+    if (!mtl.alpha_texname.empty())
+        converted->setOpacity(readTexture(mtl, mtlPath, "map_d", mtl.alpha_texname,
+                                          ImageReader::Content::Alpha, "the surface is whole"));
     return converted;
 }
 

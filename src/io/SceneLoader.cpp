@@ -747,9 +747,16 @@ std::unique_ptr<Material> SceneLoader::Reader::loadMaterial(const Node& node) {
                                     ? lookUp(materialTypes(), node["type"], "material type")
                                     : *materialTypes().find("blinn_phong");
     checkKeys(node, "a material",
-              withKeys({"type", "normal_map", "bump_map", "bump_scale"}, entry.keys()));
+              withKeys({"type", "normal_map", "bump_map", "bump_scale", "opacity"}, entry.keys()));
     std::unique_ptr<Material> material = entry.create(ObjectParameters(*this, node, "a material"));
     material->setShadingNormalMap(loadShadingNormalMap(node));
+    if (node.has("opacity")) {
+        // A mask, not a fraction: a surface is there or cut away, so a number would be all or none.
+        if (!node["opacity"].value.is_object())
+            fail(node["opacity"],
+                 "\"opacity\" is a cut-out mask: a texture ({\"texture\": FILE} or a checker)");
+        material->setOpacity(loadTexture(node["opacity"], ImageReader::Content::Alpha));
+    }
     warnOfByteColours(node);
     return material;
 }
@@ -1047,8 +1054,8 @@ std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
 std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTexture(
     const std::filesystem::path& path, ImageReader::Content content) {
     // One file may be both a colour texture and a map, read differently.
-    const std::string key = std::filesystem::weakly_canonical(path).string() +
-                            (content == ImageReader::Content::Data ? " (data)" : "");
+    const std::string key = std::filesystem::weakly_canonical(path).string() + " as content " +
+                            std::to_string(static_cast<int>(content));
     if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
     std::shared_ptr<const Texture> texture = ImageReader::readTexture(path, content);
     textures_[key] = texture;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "geometry/Hit.h"
+#include "materials/Texture.h"
 
 namespace lancer {
 
@@ -25,6 +26,10 @@ Vec3 Material::shadingNormal(const Hit& hit, const Vec3& wo) const {
     if (!(lengthSquared(acrossView) > 0)) return hit.ns;  // facing straight away: no way to bend
     return normalize(std::sqrt(1 - kBentNormalCosine * kBentNormalCosine) * normalize(acrossView) +
                      side * kBentNormalCosine * wo);
+}
+
+bool Material::isCutAway(const Hit& hit) const {
+    return opacity_ && opacity_->evaluate(hit).average() < 0.5f;
 }
 
 }  // namespace lancer

@@ -10,6 +10,7 @@
 namespace lancer {
 
 class Bsdf;
+class Texture;
 struct Hit;
 
 // How a surface interacts with light: the BSDF its implementation builds at a hit, and the
@@ -46,8 +47,16 @@ public:
     // surface seen from behind its normal would be black).
     Vec3 shadingNormal(const Hit& hit, const Vec3& wo) const;
 
+    // The coverage of every material type (an alpha cut-out: leaves, fences), looked up at each
+    // hit: where its value (the mean of its channels) is below 1/2 the surface is cut away, and
+    // rays pass straight through as if it were not there. Null for none.
+    void setOpacity(std::shared_ptr<const Texture> opacity) { opacity_ = std::move(opacity); }
+    bool hasCutOuts() const { return opacity_ != nullptr; }
+    bool isCutAway(const Hit& hit) const;
+
 private:
     std::shared_ptr<const ShadingNormalMap> shadingNormalMap_;
+    std::shared_ptr<const Texture> opacity_;
 };
 
 }  // namespace lancer

@@ -39,7 +39,8 @@ Color SurfaceProbe::reflectance(const Patch& patch, const std::array<Vec3, 3>& c
     for (const Vec3& p : points) {
         const std::optional<Hit> hit = at(patch, p);
         if (hit) {
-            sum += hit->material->diffuseReflectance(*hit);
+            // A cut-away point reflects nothing: the element's share of the surface that is there.
+            if (!hit->material->isCutAway(*hit)) sum += hit->material->diffuseReflectance(*hit);
         } else {
             Hit fallback;  // uv (0, 0): only textures see the difference
             fallback.p = p;

@@ -27,9 +27,12 @@ const Material* Scene::addMaterial(std::unique_ptr<Material> material) {
 }
 
 void Scene::addShape(std::unique_ptr<Shape> shape) {
-    for (std::uint32_t i = 0; i < shape->primitiveCount() && !hasTransmissiveMaterial_; ++i) {
-        const Material* material = shape->primitiveMaterial(i);
-        hasTransmissiveMaterial_ = material && material->isTransmissive();
+    for (std::uint32_t i = 0;
+         i < shape->primitiveCount() && !(hasTransmissiveMaterial_ && hasCutOuts_); ++i) {
+        if (const Material* material = shape->primitiveMaterial(i)) {
+            hasTransmissiveMaterial_ = hasTransmissiveMaterial_ || material->isTransmissive();
+            hasCutOuts_ = hasCutOuts_ || material->hasCutOuts();
+        }
     }
     (shape->isBounded() ? boundedShapes_ : unboundedShapes_).push_back(std::move(shape));
 }
@@ -61,9 +64,22 @@ Color Scene::background(const Vec3& direction) const {
 }
 
 std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {
-    const std::optional<SceneCrossing> crossing = cross(ray, tMax);
+    std::optional<SceneCrossing> crossing = cross(ray, tMax);
     if (!crossing) return std::nullopt;
-    return record(ray, *crossing);
+    Hit hit = record(ray, *crossing);
+    if (!hasCutOuts_) return hit;
+    // Past each cut-away point by a ray spawned beyond it: it moves on at every step, so the walk
+    // ends. Its t values are the first ray's, as the direction is the same.
+    float travelled = 0;
+    while (hit.material && hit.material->isCutAway(hit)) {
+        travelled += hit.t;
+        const Ray beyond = hit.spawnRay(ray.direction);
+        crossing = cross(beyond, tMax - travelled);
+        if (!crossing) return std::nullopt;
+        hit = record(beyond, *crossing);
+    }
+    hit.t += travelled;
+    return hit;
 }
 
 std::optional<SceneCrossing> Scene::cross(const Ray& ray, float tMax) const {
@@ -90,6 +106,7 @@ Hit Scene::record(const Ray& ray, const SceneCrossing& crossing) const {
 }
 
 bool Scene::occluded(const Ray& ray, float tMax) const {
+    if (hasCutOuts_) return intersect(ray, tMax).has_value();  // a blocker may be cut away
     for (const auto& shape : unboundedShapes_)
         if (shape->occluded(ray, tMax)) return true;
     return bvh_->occluded(ray, tMax, [&](std::uint32_t k, const Ray& r, float tFar) {

@@ -76,17 +76,21 @@ public:
     Bounds3 bounds() const;
 
     // The nearest hit with 0 < t < tMax, if any: every candidate crosses, the nearest is recorded.
+    // Points of surfaces cut away by their material's opacity are passed through (cross and
+    // record below see every surface).
     std::optional<Hit> intersect(const Ray& ray, float tMax) const;
     // The same in two phases: the nearest crossing, then its record (for callers that may need
     // no record, such as shadow rays stopped by an opaque surface).
     std::optional<SceneCrossing> cross(const Ray& ray, float tMax) const;
     Hit record(const Ray& ray, const SceneCrossing& crossing) const;
-    // Whether anything is hit with 0 < t < tMax.
+    // Whether anything is hit with 0 < t < tMax (cut-away points let the ray through).
     bool occluded(const Ray& ray, float tMax) const;
 
     // Whether some surface lets light through (shadow rays must then look past the first
     // surface they meet).
     bool hasTransmissiveMaterial() const { return hasTransmissiveMaterial_; }
+    // Whether some surface has alpha cut-outs (intersect then looks past the points cut away).
+    bool hasCutOuts() const { return hasCutOuts_; }
 
 private:
     RenderSettings settings_;
@@ -99,6 +103,7 @@ private:
     std::vector<std::unique_ptr<Shape>> unboundedShapes_;
     std::unique_ptr<Bvh> bvh_;  // over the bounded shapes
     bool hasTransmissiveMaterial_ = false;
+    bool hasCutOuts_ = false;
     Statistics statistics_;
     std::vector<std::unique_ptr<Light>> lights_;
 };

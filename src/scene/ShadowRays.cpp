@@ -30,10 +30,12 @@ Color ShadowRays::transmittance(const Scene& scene, const Hit& from, const Light
         if (!crossing) return visibility;
         // An opaque surface stops the light: no record needed to know it.
         const Material* material = crossing->shape->primitiveMaterial(crossing->crossing.primitive);
-        if (material && !material->isTransmissive()) return Color(0);
+        if (material && !material->isTransmissive() && !material->hasCutOuts()) return Color(0);
         const Hit blocker = scene.record(ray, *crossing);
-        visibility *= blocker.material->transmission();
-        if (visibility.isBlack()) return visibility;
+        if (!blocker.material->isCutAway(blocker)) {
+            visibility *= blocker.material->transmission();
+            if (visibility.isBlack()) return visibility;
+        }
         surface = blocker;
     }
 }
