@@ -52,8 +52,13 @@ void LightSampler::addEmitters(const Shape& shape) {
     if (shape.areaLight()) return;  // the surface of a light of the scene file: sampled already
     for (std::uint32_t i = 0; i < shape.primitiveCount(); ++i) {
         const Material* material = shape.primitiveMaterial(i);
-        if (material && !material->emission().isBlack())
-            addEmitterLight(std::make_unique<AreaLight>(shape, i, material->emission()), shape, i);
+        if (!material || material->emission().isBlack()) continue;
+        AreaLight::RadianceAt radianceAt;
+        if (material->hasTexturedEmission())
+            radianceAt = [material](const Hit& hit) { return material->emission(hit); };
+        addEmitterLight(
+            std::make_unique<AreaLight>(shape, i, material->emission(), std::move(radianceAt)),
+            shape, i);
     }
 }
 

@@ -89,7 +89,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sa
                     weight = powerHeuristic(lastBsdfPdf, lightPdf);
                 }
             }
-            L += throughput * material.emission() * weight;
+            L += throughput * material.emission(hit) * weight;
         }
         if (bounces >= maxDepth_) break;
 

@@ -62,7 +62,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     const Bsdf bsdf(material, hit, wo, Bsdf::Weights::AsGiven);
 
     Color L;
-    if (front || hit.shape->emitsOnBothSides()) L += material.emission();
+    if (front || hit.shape->emitsOnBothSides()) L += material.emission(hit);
     L += localShading(hit, bsdf, wo, front, sampler, rayCount);
 
     if (depth >= maxDepth_) return L;

@@ -9,8 +9,7 @@
 //
 // Materials (pbrMetallicRoughness onto the scene format's):
 //   baseColorFactor x baseColorTexture   diffuse (the factor multiplied into the texels), sRGB
-//   emissiveFactor (x emissiveStrength)  emission; an emissiveTexture contributes its mean colour,
-//                                        since emission is uniform over a material
+//   emissiveFactor (x emissiveStrength)  emission, times the emissiveTexture (sRGB) per texel
 //   normalTexture                        normal_map (tangent space, linear; its scale is ignored)
 //   metallicFactor m, roughnessFactor r  glTF's BRDF is mix(dielectric, metal, m), so ours is too:
 //                                        diffuse (1 - m) x base colour, reflection m of a
@@ -464,15 +463,10 @@ std::shared_ptr<const Material> GltfReader::convert(const tinygltf::Material& ma
     if (const auto it = material.extensions.find(kEmissiveStrength);
         it != material.extensions.end() && it->second.Has("emissiveStrength"))
         emission *= static_cast<float>(it->second.Get("emissiveStrength").GetNumberAsDouble());
-    if (!emission.isBlack()) {
-        if (const auto image = texels(material.emissiveTexture.index, emission, true)) {
-            warnOnce("emissiveTexture",
-                     "emissive textures are drawn as their mean colour "
-                     "(emission is uniform over a material)");
-            emission = meanColor(*image);
-        }
-    }
     ours.emission = emission;
+    if (!emission.isBlack())
+        if (const auto image = texels(material.emissiveTexture.index, Color(1), true))
+            ours.emissionMap = std::make_shared<ImageTexture>(std::make_shared<MipMap>(*image));
 
     auto converted = std::make_shared<BlinnPhongMaterial>(std::move(ours));
     if (const auto image = texels(material.normalTexture.index, Color(1), false)) {

@@ -139,6 +139,10 @@ std::shared_ptr<const Material> MtlMaterialConverter::convert(const tinyobj::mat
     const Color kd = isGiven(mtl.diffuse) ? colorOf(mtl.diffuse) : Color(kDefaultDiffuse);
     const Color ka = colorOf(mtl.ambient), ks = colorOf(mtl.specular);
     material.emission = colorOf(mtl.emission);
+    // map_Ke multiplies Ke, as map_Ks multiplies Ks.
+    if (!material.emission.isBlack() && !mtl.emissive_texname.empty())
+        material.emissionMap = readTexture(mtl, mtlPath, "map_Ke", mtl.emissive_texname,
+                                           ImageReader::Content::Color, "Ke is used alone");
     if (model.lit) {
         std::shared_ptr<const Texture> texture;
         if (!mtl.diffuse_texname.empty())

@@ -7,8 +7,12 @@
 
 namespace lancer {
 
-AreaLight::AreaLight(const Shape& shape, std::uint32_t primitive, const Color& radiance)
-    : shape_(shape), primitive_(primitive), radiance_(radiance) {}
+AreaLight::AreaLight(const Shape& shape, std::uint32_t primitive, const Color& radiance,
+                     RadianceAt radianceAt)
+    : shape_(shape),
+      primitive_(primitive),
+      radiance_(radiance),
+      radianceAt_(std::move(radianceAt)) {}
 
 LightSample AreaLight::sample(const Vec3& p, const Vec2& u) const {
     LightSample s;
@@ -22,8 +26,17 @@ LightSample AreaLight::sample(const Vec3& p, const Vec2& u) const {
     s.pdf = onLight->pdf;
     // A one-sided emitter seen from behind shows its dark back.
     const bool seesEmittingSide = shape_.emitsOnBothSides() || dot(onLight->n, s.wi) < 0;
-    if (seesEmittingSide && s.pdf > 0 && std::isfinite(s.pdf)) s.irradiance = radiance_ / s.pdf;
+    if (!seesEmittingSide || !(s.pdf > 0) || !std::isfinite(s.pdf)) return s;
+    s.irradiance = radiance(p, s) / s.pdf;
     return s;
+}
+
+Color AreaLight::radiance(const Vec3& p, const LightSample& s) const {
+    if (!radianceAt_) return radiance_;
+    // The point's uv come with a hit on the shape: the ray from p ends just past the sample.
+    const Ray towards{p, s.position - p};
+    const std::optional<Hit> onLight = shape_.intersect(towards, 1 + 1e-4f);
+    return onLight ? radianceAt_(*onLight) : radiance_;
 }
 
 float AreaLight::pdf(const Vec3& p, const Vec3& wi, const Hit& onLight) const {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 
 #include "lights/Light.h"
 
@@ -14,8 +15,13 @@ class Shape;
 // samples itself (by area, or better where the shape knows how: the cone a sphere subtends).
 class AreaLight final : public Light {
 public:
-    // The shape outlives the light.
-    AreaLight(const Shape& shape, std::uint32_t primitive, const Color& radiance);
+    // The radiance that a textured emitter sends from a point of its surface.
+    using RadianceAt = std::function<Color(const Hit&)>;
+
+    // The shape outlives the light. `radiance` is the mean (all of it for a uniform emitter);
+    // `radianceAt`, if given, the radiance at each point, found by a ray to the point sampled.
+    AreaLight(const Shape& shape, std::uint32_t primitive, const Color& radiance,
+              RadianceAt radianceAt = nullptr);
 
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     bool isDelta() const override { return false; }
@@ -27,9 +33,13 @@ public:
     const Color& radiance() const { return radiance_; }
 
 private:
+    // The radiance the sample s, seen from p, receives from.
+    Color radiance(const Vec3& p, const LightSample& s) const;
+
     const Shape& shape_;
     std::uint32_t primitive_;
     Color radiance_;
+    RadianceAt radianceAt_;
 };
 
 }  // namespace lancer

@@ -86,7 +86,7 @@ std::unique_ptr<Material> BlinnPhongMaterial::create(const MaterialParameters& k
     readFactorOrMap(keys, "reflection", m.reflection, m.reflectionMap);
     if (keys.has("transmission")) m.transmission = keys.color("transmission");
     if (keys.has("ior")) m.ior = keys.numberAbove("ior", 0, false);
-    if (keys.has("emission")) m.emission = keys.color("emission");
+    readFactorOrMap(keys, "emission", m.emission, m.emissionMap);
     if (keys.has("roughness") && keys.isTexture("roughness")) {
         m.roughness = 1;
         m.roughnessMap = keys.dataTexture("roughness");
@@ -118,6 +118,15 @@ void BlinnPhongMaterial::addLobes(const Hit& hit, Bsdf& bsdf) const {
     else
         bsdf.add<MirrorLobe>(reflection);
     bsdf.add<DielectricLobe>(parameters_.transmission, parameters_.ior);
+}
+
+Color BlinnPhongMaterial::emission(const Hit& hit) const {
+    return atHit(parameters_.emission, parameters_.emissionMap, hit);
+}
+
+Color BlinnPhongMaterial::emission() const {
+    return parameters_.emissionMap ? parameters_.emission * parameters_.emissionMap->average()
+                                   : parameters_.emission;
 }
 
 Color BlinnPhongMaterial::diffuseReflectance(const Hit& hit) const {

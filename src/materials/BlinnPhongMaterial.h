@@ -33,9 +33,9 @@ public:
         float roughness = 0;                                 // GGX alpha of kr and kt; 0: smooth
         std::optional<ConductorIor> conductor;               // Fresnel of kr: none is 1
         // Textures that multiply the factors above where given (the scene's {"texture": ...} for
-        // these keys, whose factor is then 1; MTL's map_Ks, map_refl, map_Pr); null: the factor
-        // alone. A roughness map's value is the mean of its three channels.
-        std::shared_ptr<const Texture> specularMap, reflectionMap, roughnessMap;
+        // these keys, whose factor is then 1; MTL's map_Ks; glTF's emissive texture); null: the
+        // factor alone. A roughness map's value is the mean of its three channels.
+        std::shared_ptr<const Texture> specularMap, reflectionMap, roughnessMap, emissionMap;
     };
 
     // A named metal of the scene file's `metal` key.
@@ -58,7 +58,9 @@ public:
     Color diffuseReflectance(const Hit& hit) const override;
     bool reflectsDiffusely() const override;
     Color ambientReflectance(const Hit& hit) const override;
-    Color emission() const override { return parameters_.emission; }
+    Color emission(const Hit& hit) const override;
+    Color emission() const override;
+    bool hasTexturedEmission() const override { return parameters_.emissionMap != nullptr; }
     Color transmission() const override { return parameters_.transmission; }
 
     const Parameters& parameters() const { return parameters_; }

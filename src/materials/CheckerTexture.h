@@ -18,6 +18,7 @@ public:
     static std::vector<std::string> keys() { return {"even", "odd", "scale"}; }
     static std::shared_ptr<const Texture> create(const Parameters& parameters);
     Color evaluate(const Hit& hit) const override;
+    Color average() const override { return 0.5f * (even_ + odd_); }
 
 private:
     Color even_, odd_;

@@ -13,4 +13,8 @@ Color ImageTexture::evaluate(const Hit& hit) const {
     return mipmap_->trilinear(hit.uv, width);
 }
 
+Color ImageTexture::average() const {
+    return mipmap_->texel(mipmap_->levelCount() - 1, 0, 0);
+}
+
 }  // namespace lancer

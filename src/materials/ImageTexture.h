@@ -19,6 +19,8 @@ public:
     // picks the level whose texels are one pixel apart. (pbrt's 2 * max of the four components
     // reads about one level blurrier.) No derivatives, no footprint: bilinear on level 0.
     Color evaluate(const Hit& hit) const override;
+    // The 1 x 1 level of the pyramid.
+    Color average() const override;
 
     const MipMap& mipmap() const { return *mipmap_; }
 

@@ -29,8 +29,13 @@ public:
     virtual bool reflectsDiffusely() const = 0;
     // Whitted's ambient coefficient ka at the hit, which multiplies the scene's ambient light.
     virtual Color ambientReflectance(const Hit& hit) const { return diffuseReflectance(hit); }
-    // The radiance emitted, uniformly over the surface.
+    // The radiance emitted at the hit (a Lambertian emitter), and its mean over the surface (the
+    // same where the emission is uniform): what decides whether the surface emits at all and how
+    // much power it has.
+    virtual Color emission(const Hit&) const { return emission(); }
     virtual Color emission() const { return Color(0); }
+    // Whether emission(hit) varies over the surface (lights then look it up at their samples).
+    virtual bool hasTexturedEmission() const { return false; }
     // The fraction kt of light that passes straight through (what shadow rays through glass
     // keep); black for an opaque material.
     virtual Color transmission() const { return Color(0); }

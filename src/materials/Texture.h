@@ -10,6 +10,9 @@ class Texture {
 public:
     virtual ~Texture() = default;
     virtual Color evaluate(const Hit& hit) const = 0;
+    // Its mean over the uv square: the uniform value that stands in for it (a textured light's
+    // power, by which lights are picked).
+    virtual Color average() const = 0;
     // Whether it is black everywhere, as far as the texture can tell without looking.
     virtual bool isBlack() const { return false; }
 };

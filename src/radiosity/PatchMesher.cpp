@@ -78,8 +78,10 @@ void PatchMesher::addSurfaceTriangle(RadiosityMesh& mesh, const std::array<Vec3,
         patch.material = source.material;
         patch.curved = source.curved;
         patch.probeDistance = source.curved ? source.probeDistance : 1e-3f * std::sqrt(patch.area);
-        patch.emission[0] = material.emission();
-        patch.emission[1] = source.emitsOnBothSides ? material.emission() : Color(0);
+        const Color emission = material.hasTexturedEmission() ? SurfaceProbe::emission(patch, piece)
+                                                              : material.emission();
+        patch.emission[0] = emission;
+        patch.emission[1] = source.emitsOnBothSides ? emission : Color(0);
         // An area light's own surface: its light shoots from the light source instead.
         if (source.surface->areaLight()) patch.emission = {};
         const auto index = static_cast<std::uint32_t>(mesh.patches.size());

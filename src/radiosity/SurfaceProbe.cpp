@@ -27,7 +27,8 @@ void SurfaceProbe::place(const Patch& patch, const std::array<Vec3, 3>& corners,
     }
 }
 
-Color SurfaceProbe::reflectance(const Patch& patch, const std::array<Vec3, 3>& corners) {
+template <typename OfHit>
+Color SurfaceProbe::average(const Patch& patch, const std::array<Vec3, 3>& corners, OfHit ofHit) {
     constexpr float kNear = 4.0f / 6, kFar = 1.0f / 6;
     const std::array<Vec3, 4> points{
         (corners[0] + corners[1] + corners[2]) / 3.0f,
@@ -37,17 +38,25 @@ Color SurfaceProbe::reflectance(const Patch& patch, const std::array<Vec3, 3>& c
     };
     Color sum;
     for (const Vec3& p : points) {
-        const std::optional<Hit> hit = at(patch, p);
-        if (hit) {
-            // A cut-away point reflects nothing: the element's share of the surface that is there.
-            if (!hit->material->isCutAway(*hit)) sum += hit->material->diffuseReflectance(*hit);
-        } else {
-            Hit fallback;  // uv (0, 0): only textures see the difference
-            fallback.p = p;
-            sum += patch.material->diffuseReflectance(fallback);
+        std::optional<Hit> hit = at(patch, p);
+        if (!hit) {
+            hit.emplace();  // uv (0, 0): only textures see the difference
+            hit->p = p;
+            hit->material = patch.material;
         }
+        // A cut-away point reflects and emits nothing: the share of the surface that is there.
+        if (!hit->material->isCutAway(*hit)) sum += ofHit(*hit);
     }
     return sum / 4.0f;
+}
+
+Color SurfaceProbe::reflectance(const Patch& patch, const std::array<Vec3, 3>& corners) {
+    return average(patch, corners,
+                   [](const Hit& hit) { return hit.material->diffuseReflectance(hit); });
+}
+
+Color SurfaceProbe::emission(const Patch& patch, const std::array<Vec3, 3>& corners) {
+    return average(patch, corners, [](const Hit& hit) { return hit.material->emission(hit); });
 }
 
 }  // namespace lancer

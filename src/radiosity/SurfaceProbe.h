@@ -23,6 +23,14 @@ public:
     static void place(const Patch& patch, const std::array<Vec3, 3>& corners, Element& element);
     // kd averaged over four points of the triangle (its centroid and three points around it).
     static Color reflectance(const Patch& patch, const std::array<Vec3, 3>& corners);
+    // The emitted radiance averaged over the same four points (a textured emitter's patch).
+    static Color emission(const Patch& patch, const std::array<Vec3, 3>& corners);
+
+private:
+    // `ofHit` averaged over the four points, the material at the point `p` (uv (0, 0)) standing
+    // in where the probe misses.
+    template <typename OfHit>
+    static Color average(const Patch& patch, const std::array<Vec3, 3>& corners, OfHit ofHit);
 };
 
 }  // namespace lancer

@@ -18,8 +18,11 @@ bool isRenderBar(const std::string& piece) {
     return piece.find("elapsed") != std::string::npos;
 }
 
+// The solve's bar in any of its phases (shooting, subdividing): on a quiet machine a short solve
+// may shoot within one redraw interval and show only its later phase.
 bool isRadiosityBar(const std::string& piece) {
-    return piece.find("radiosity: shooting, ") != std::string::npos;
+    return piece.find("radiosity: shooting, ") != std::string::npos ||
+           piece.find("radiosity: subdividing, ") != std::string::npos;
 }
 
 // A render of the Whitted scene long enough for several redraws of the bar.
