@@ -16,15 +16,6 @@ constexpr float kBackground = 0.2f;
 // A checker mask of squares 0.5 wide: solid where even, cut away where odd.
 const nlohmann::json kCheckerMask = {{"checker", {{"even", 1}, {"odd", 0}, {"scale", 0.5}}}};
 
-// An orthographic camera looking straight down at y = 0 from `height`, 80 x 60 pixels.
-nlohmann::json lookingDown(double height) {
-    return {{"type", "orthographic"},
-            {"position", {0.1, height, 0.2}},
-            {"look_at", {0.1, 0, 0.2}},
-            {"up", {0, 0, -1}},
-            {"height", 2}};
-}
-
 nlohmann::json plane(double y, const std::string& material) {
     return {{"type", "plane"}, {"point", {0, y, 0}}, {"normal", {0, 1, 0}}, {"material", material}};
 }
@@ -38,7 +29,7 @@ class CliCutOut : public testing::TestWithParam<std::string> {};
 TEST_P(CliCutOut, CameraRaysPassThroughTheHoles) {
     const nlohmann::json scene = {
         {"render", {{"width", 80}, {"height", 60}, {"spp", 1}, {"integrator", GetParam()}}},
-        {"camera", lookingDown(5)},
+        {"camera", cameraAlongY(0.1, 0.2, 5)},
         {"background", kBackground},
         {"materials", {{"leaf", {{"diffuse", 0.5}, {"opacity", kCheckerMask}}}}},
         {"objects", {plane(0, "leaf")}},
@@ -59,7 +50,7 @@ TEST_P(CliCutOut, ShadowRaysPassThroughTheHoles) {
     const nlohmann::json scene = {
         {"render",
          {{"width", 80}, {"height", 60}, {"spp", 4}, {"max_depth", 1}, {"integrator", GetParam()}}},
-        {"camera", lookingDown(0.5)},
+        {"camera", cameraAlongY(0.1, 0.2, 0.5)},
         {"materials",
          {{"floor", {{"diffuse", 0.8}}}, {"roof", {{"diffuse", 0.5}, {"opacity", kCheckerMask}}}}},
         {"objects", {plane(0, "floor"), plane(1, "roof")}},
@@ -93,12 +84,9 @@ const char* const kQuadObj =
 TEST(CliCutOut, RadiosityShowsTheBackgroundThroughTheHoles) {
     const TempFolder folder;
     folder.write("quad.obj", kQuadObj);
-    nlohmann::json camera = lookingDown(5);
-    camera["position"] = {0, 5, 0};
-    camera["look_at"] = {0, 0, 0};
     const nlohmann::json scene = {
         {"render", {{"width", 40}, {"height", 40}, {"spp", 1}, {"integrator", "radiosity"}}},
-        {"camera", camera},
+        {"camera", cameraAlongY(0, 0, 5)},
         {"background", kBackground},
         {"materials", {{"leaf", {{"diffuse", 0.5}, {"opacity", kCheckerMask}}}}},
         {"objects",
@@ -131,12 +119,7 @@ TEST(CliCutOut, MtlMapDIsTheTexturesAlpha) {
     folder.write("quad.obj", std::string("mtllib quad.mtl\nusemtl leaf\n") + kQuadObj);
     const nlohmann::json scene = {
         {"render", {{"width", 40}, {"height", 40}, {"spp", 1}}},
-        {"camera",
-         {{"type", "orthographic"},
-          {"position", {0, 5, 0}},
-          {"look_at", {0, 0, 0}},
-          {"up", {0, 0, -1}},
-          {"height", 2}}},
+        {"camera", cameraAlongY(0, 0, 5)},
         {"background", kBackground},
         {"objects", {{{"type", "mesh"}, {"file", (folder / "quad.obj").string()}}}},
         {"lights", {kSun}}};

@@ -26,14 +26,6 @@ std::string quarter(int i, int j) {
     return "f " + corner(a) + " " + corner(b) + " " + corner(c) + " " + corner(d) + "\n";
 }
 
-nlohmann::json lookingDown(double height) {
-    return {{"type", "orthographic"},
-            {"position", {0, height, 0}},
-            {"look_at", {0, 0, 0}},
-            {"up", {0, 0, -1}},
-            {"height", 2}};
-}
-
 // The camera looks up at the textured square from below: every pixel is one of its radiances.
 TEST(CliEmissionTexture, CameraSeesTheRadianceOfEachTexel) {
     const TempFolder folder;
@@ -42,7 +34,7 @@ TEST(CliEmissionTexture, CameraSeesTheRadianceOfEachTexel) {
     for (const char* integrator : {"whitted", "path"}) {
         const nlohmann::json scene = {
             {"render", {{"width", 40}, {"height", 40}, {"spp", 1}, {"integrator", integrator}}},
-            {"camera", lookingDown(-5)},
+            {"camera", cameraAlongY(0, 0, -5)},
             {"materials", {{"lamp", {{"diffuse", 0}, {"emission", kCheckerEmission}}}}},
             {"objects",
              {{{"type", "mesh"},
@@ -79,12 +71,15 @@ TEST(CliEmissionTexture, LightsTheSceneAsItsPiecesDo) {
     const auto floorUnder = [&](const nlohmann::json& emitter, const std::string& integrator) {
         nlohmann::json scene = {
             {"render", {{"width", 16}, {"height", 16}, {"spp", 256}, {"integrator", integrator}}},
-            {"camera", lookingDown(0.25)},
+            {"camera", cameraAlongY(0, 0, 0.25)},
             {"materials",
              {{"floor", {{"diffuse", 0.5}}},
               {"lamp", {{"diffuse", 0}, {"emission", kCheckerEmission}}}}},
             {"objects",
-             {{{"type", "box"}, {"min", {-1.5, -0.1, -1.5}}, {"max", {1.5, 0, 1.5}}, {"material", "floor"}},
+             {{{"type", "box"},
+               {"min", {-1.5, -0.1, -1.5}},
+               {"max", {1.5, 0, 1.5}},
+               {"material", "floor"}},
               emitter}}};
         if (integrator == "radiosity")
             scene["radiosity"] = {{"patch_size", 0.5}, {"subdivision_levels", 0}};

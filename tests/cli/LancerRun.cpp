@@ -361,4 +361,12 @@ nlohmann::json loadWhittedScene() {
                                  nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
 }
 
+nlohmann::json cameraAlongY(double x, double z, double height) {
+    return {{"type", "orthographic"},
+            {"position", {x, height, z}},
+            {"look_at", {x, 0, z}},
+            {"up", {0, 0, -1}},
+            {"height", 2}};
+}
+
 }  // namespace lancer::test

@@ -147,4 +147,9 @@ struct CaseName {
 // scenes/whitted.json of the source tree, parsed (comments allowed).
 nlohmann::json loadWhittedScene();
 
+// An orthographic camera 2 units high looking straight down (-y) at (x, 0, z) from y = height
+// (below the plane when negative: then looking up), -z at the top of the image, +x to the right
+// when looking down: the tests of floors whose uv are the world's (x, z).
+nlohmann::json cameraAlongY(double x, double z, double height);
+
 }  // namespace lancer::test

@@ -19,12 +19,7 @@ constexpr float kLow = 0.25f, kHigh = 0.75f;
 nlohmann::json floorScene(const nlohmann::json& material) {
     return {
         {"render", {{"width", 160}, {"height", 120}, {"spp", 1}, {"max_depth", 2}}},
-        {"camera",
-         {{"type", "orthographic"},
-          {"position", {0.1, 5, 0.2}},
-          {"look_at", {0.1, 0, 0.2}},
-          {"up", {0, 0, -1}},
-          {"height", 2}}},
+        {"camera", cameraAlongY(0.1, 0.2, 5)},
         {"background", 0.5},
         {"materials", {{"floor", material}}},
         {"objects",
