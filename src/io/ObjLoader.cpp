@@ -45,11 +45,6 @@ std::string quotedList(const std::vector<std::string>& names) {
     return list;
 }
 
-// "1 face", "3 faces".
-std::string countOf(std::size_t count, const std::string& noun) {
-    return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
-}
-
 // ---------------------------------------------------------------------------------------------
 // Reading the files
 
@@ -370,29 +365,10 @@ private:
 
 }  // namespace
 
-namespace {
-
-// Whether the file's first line is "ply", the magic line of every PLY file (ASCII or binary);
-// the file is read from its start again afterwards.
-bool startsAsPly(std::ifstream& file) {
-    char magic[4] = {};
-    file.read(magic, 4);
-    const bool ply = file.gcount() == 4 && std::string(magic, 3) == "ply" &&
-                     (magic[3] == '\n' || magic[3] == '\r');
-    file.clear();
-    file.seekg(0);
-    return ply;
-}
-
-}  // namespace
-
 std::shared_ptr<TriangleMesh> ObjLoader::load(const fs::path& objPath,
                                               const TextureLoader& loadTexture,
                                               std::vector<std::string>& warnings) {
     std::ifstream file = openObj(objPath);
-    // tinyobjloader would read a PLY file as an OBJ without faces: say what it is instead.
-    if (startsAsPly(file))
-        throw InputError(objPath.string(), "PLY models are not supported (use OBJ or glTF)");
     ObjContents obj = parseObj(file, objPath, /*triangulate=*/false);
     if (hasTruncatedFaceSizes(obj.shapes)) {
         file.clear();

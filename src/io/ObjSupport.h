@@ -1,14 +1,16 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 namespace lancer {
 
-// What the OBJ loader and its MTL material converter share: warnings in the loader's format,
-// names quoted in messages, and the file names written inside OBJ and MTL files.
+// What the model loaders (OBJ and its MTL material converter, PLY) share: warnings in the loaders'
+// format, names quoted and things counted in messages, and the file names written inside OBJ and
+// MTL files.
 
 inline void warn(std::vector<std::string>& warnings, const std::filesystem::path& file,
                  const std::string& message) {
@@ -17,6 +19,11 @@ inline void warn(std::vector<std::string>& warnings, const std::filesystem::path
 
 inline std::string inQuotes(const std::string& s) {
     return "\"" + s + "\"";
+}
+
+// "1 face", "3 faces".
+inline std::string countOf(std::size_t count, const std::string& noun) {
+    return std::to_string(count) + " " + noun + (count == 1 ? "" : "s");
 }
 
 // A file named inside an OBJ or MTL file: relative to that file's folder, and written with

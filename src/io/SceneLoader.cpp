@@ -28,6 +28,7 @@
 #include "io/InputFile.h"
 #include "io/JsonDocument.h"
 #include "io/ObjLoader.h"
+#include "io/PlyLoader.h"
 #include "lights/AreaLight.h"
 #include "lights/DirectionalLight.h"
 #include "lights/EnvironmentLight.h"
@@ -905,14 +906,15 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadTriangle(
 
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadMeshObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
-    const auto readObj = [this](const std::filesystem::path& path) {
+    const auto readModel = [this](const std::filesystem::path& path) {
+        if (PlyLoader::isPly(path)) return PlyLoader::load(path, warnings_);
         const auto loadTexture = [this](const std::filesystem::path& p,
                                         ImageReader::Content content) {
             return loadImageTexture(p, content);
         };
         return ObjLoader::load(path, loadTexture, warnings_);
     };
-    return loadModelObject(node, what, transform, "mesh", readObj);
+    return loadModelObject(node, what, transform, "mesh", readModel);
 }
 
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadGltfObject(

@@ -182,8 +182,8 @@ TEST(CliVersion, SaysTheBuildAndTheLibraries) {
                 version.find("built with MSVC ") != std::string::npos)
         << version;
     EXPECT_NE(version.find(", without MPI\n"), std::string::npos) << version;
-    for (const char* library :
-         {"FreeImage 3.", "nlohmann-json 3.", "tinyobjloader ", "SDL2 2.", "oneTBB 20", "CLI11 2."})
+    for (const char* library : {"FreeImage 3.", "nlohmann-json 3.", "tinyobjloader ", "Assimp 5.",
+                                "SDL2 2.", "oneTBB 20", "CLI11 2."})
         EXPECT_NE(version.find(library), std::string::npos) << library << " in " << version;
 }
 

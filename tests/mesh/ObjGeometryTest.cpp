@@ -408,25 +408,6 @@ TEST(ObjErrors, FolderIsAnInputError) {
               folder.path().string() + ": error: is a folder, not an OBJ file");
 }
 
-// A PLY file (ASCII or binary, whatever its name) is named as such, not as an OBJ without faces.
-TEST(ObjErrors, PlyFileIsNamedAsUnsupported) {
-    ScratchFolder folder;
-    const std::string header =
-        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
-        "property float y\nproperty float z\nelement face 1\n"
-        "property list uchar int vertex_indices\nend_header\n";
-    const fs::path ascii = folder.write("triangle.ply", header + "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
-    EXPECT_EQ(loadOutcome(ascii),
-              ascii.string() + ": error: PLY models are not supported (use OBJ or glTF)");
-    const fs::path binary = folder.write(
-        "binary.obj", "ply\r\nformat binary_little_endian 1.0\r\nend_header\r\n\x01\x02");
-    EXPECT_EQ(loadOutcome(binary),
-              binary.string() + ": error: PLY models are not supported (use OBJ or glTF)");
-    // An OBJ whose first word merely starts with "ply" is read as an OBJ.
-    const fs::path plyish = folder.write("plyish.obj", "plywood\n");
-    EXPECT_EQ(loadOutcome(plyish), plyish.string() + ": error: no faces (f) to render");
-}
-
 TEST(ObjErrors, ObjWithoutFacesIsAnInputError) {
     ScratchFolder folder;
     const fs::path empty = folder.write("empty.obj", "");
