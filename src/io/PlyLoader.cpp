@@ -22,6 +22,7 @@
 #include <string_view>
 #include <utility>
 
+#include "geometry/PolygonTriangulator.h"
 #include "io/InputFile.h"
 #include "io/ObjSupport.h"
 #include "materials/BlinnPhongMaterial.h"
@@ -312,18 +313,34 @@ public:
         }
         for (unsigned f = 0; f < source.mNumFaces; ++f) {
             const aiFace& face = source.mFaces[f];
-            if (face.mNumIndices != 3) {
+            if (face.mNumIndices < 3) {
                 ++pointsAndLines_;
                 continue;
             }
-            const auto corner = [&](unsigned k) { return first + face.mIndices[k]; };
-            if (!isFinite(mesh_->positions[corner(0)]) || !isFinite(mesh_->positions[corner(1)]) ||
-                !isFinite(mesh_->positions[corner(2)])) {
+            facePositions_.clear();
+            for (unsigned k = 0; k < face.mNumIndices; ++k)
+                facePositions_.push_back(mesh_->positions[first + face.mIndices[k]]);
+            if (!std::all_of(facePositions_.begin(), facePositions_.end(),
+                             [](const Vec3& p) { return isFinite(p); })) {
                 ++nonFinite_;
                 continue;
             }
-            for (unsigned k = 0; k < 3; ++k)
-                mesh_->indices.push_back(corner(k));
+            addTriangles(face, first);
+        }
+    }
+
+    // A face split as the OBJ loader splits its faces (concave ones right), less zero-area
+    // triangles; facePositions_ holds its corners.
+    void addTriangles(const aiFace& face, std::uint32_t first) {
+        for (const PolygonTriangulator::CornerTriple& t :
+             PolygonTriangulator::triangulate(facePositions_)) {
+            const Vec3& p0 = facePositions_[t[0]];
+            if (!(length(cross(facePositions_[t[1]] - p0, facePositions_[t[2]] - p0)) > 0)) {
+                ++zeroArea_;
+                continue;
+            }
+            for (const std::size_t corner : t)
+                mesh_->indices.push_back(first + face.mIndices[corner]);
             mesh_->faceMaterials.push_back(0);
         }
     }
@@ -337,7 +354,9 @@ public:
                      " with fewer than 3 vertices (points, lines) ignored");
         if (nonFinite_ > 0)
             warn(warnings, path,
-                 countOf(nonFinite_, "triangle") + " with non-finite vertex coordinates dropped");
+                 countOf(nonFinite_, "face") + " with non-finite vertex coordinates dropped");
+        if (zeroArea_ > 0)
+            warn(warnings, path, countOf(zeroArea_, "zero-area triangle") + " dropped");
         if (mesh_->triangleCount() == 0) throw InputError(path.string(), "no faces to render");
         if (!hasNormals_) mesh_->normals.clear();
         if (!hasUvs_) mesh_->uvs.clear();
@@ -348,7 +367,8 @@ public:
 private:
     std::shared_ptr<TriangleMesh> mesh_;
     bool hasNormals_ = false, hasUvs_ = false, hasColours_ = false;
-    std::size_t pointsAndLines_ = 0, nonFinite_ = 0;
+    std::size_t pointsAndLines_ = 0, nonFinite_ = 0, zeroArea_ = 0;
+    std::vector<Vec3> facePositions_;  // of the face being added
 };
 
 }  // namespace
@@ -373,15 +393,15 @@ std::shared_ptr<TriangleMesh> PlyLoader::load(const fs::path& path,
     const PlyHeader header = HeaderReader(path, data).read();
     BodyChecker(path, data, header).check();
 
-    // Assimp logs nothing unless a logger is created, which lancer never does. Validation comes
-    // before triangulation, which would read vertices through out-of-range indices. Nothing that
-    // adds or merges vertices is asked for: the file's vertices are the mesh's.
+    // Assimp logs nothing unless a logger is created, which lancer never does. Its validation
+    // catches the indices out of range. Faces are triangulated here, as OBJ's are: Assimp's
+    // triangulation aborts the process (an assertion) on faces of no vertices, and gets concave
+    // faces wrong. No other step is asked for: the file's vertices are the mesh's.
     Assimp::Importer importer;
     const aiScene* scene = nullptr;
     try {
         scene = importer.ReadFileFromMemory(data.data(), data.size(),
-                                            aiProcess_ValidateDataStructure | aiProcess_Triangulate,
-                                            "ply");
+                                            aiProcess_ValidateDataStructure, "ply");
     } catch (const std::exception& e) {  // Assimp catches its own, but not in every build
         throw importError(path, e.what());
     }

@@ -120,6 +120,28 @@ TEST(PlyLoader, VertexColoursAndLinesAreWarnedOf) {
                                       "lines) ignored");
 }
 
+// A concave face is split by the OBJ loader's ear clipping: its triangles cover it exactly.
+// A face of no vertices (Assimp's triangulation once aborted on them) is ignored.
+TEST(PlyLoader, ConcaveFacesAreTriangulatedAndEmptyFacesIgnored) {
+    ScratchFolder folder;
+    const std::vector<Vec3> lShape = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0},
+                                      {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+    std::string body;
+    for (const Vec3& p : lShape)
+        body += std::to_string(p.x) + " " + std::to_string(p.y) + " 0\n";
+    body += "6 0 1 2 3 4 5\n0\n";
+    const fs::path path = folder.write(
+        "l.ply",
+        "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+        "property float z\nelement face 2\nproperty list uchar int vertex_indices\nend_header\n" +
+            body);
+    const LoadedPly loaded = loadPly(path);
+    EXPECT_EQ(loaded.mesh->triangleCount(), 4u);
+    EXPECT_NEAR(totalArea(*loaded.mesh), polygonArea(lShape), 1e-6);
+    ASSERT_EQ(loaded.warnings.size(), 1u);
+    EXPECT_NE(loaded.warnings[0].find("1 face with fewer than 3 vertices"), std::string::npos);
+}
+
 TEST(PlyLoader, CrlfHeaderIsRead) {
     EXPECT_EQ(loadPly(corpus("crlf-header.ply")).mesh->triangleCount(), 1u);
 }
