@@ -158,6 +158,7 @@ public:
             // A count beyond what the bytes left can hold is refused before the walk, which is
             // then bounded by them (the last ASCII value needs no separator after it).
             const std::uint64_t least = minimumBytes(element);
+            if (least == 0) continue;  // no properties: nothing to read, however many
             if (element.count > (data_.size() - at_ + 1) / least) truncated(element);
             for (std::uint64_t i = 0; i < element.count; ++i)
                 for (const PlyProperty& property : element.properties)
