@@ -256,6 +256,20 @@ private:
     // "file:line:col" of an object member's key.
     static std::string placeOfKey(const Node& node);
     [[noreturn]] void fail(const Node& node, const std::string& message) const;
+    // The error of a name that `defined` (the scene's `section`) does not hold: the names it
+    // holds, and the nearest.
+    template <typename Definitions>
+    [[noreturn]] void failUndefined(const Node& node, const std::string& what,
+                                    const std::string& name, const Definitions& defined,
+                                    const char* section) const {
+        std::vector<std::string> names;
+        for (const auto& entry : defined)
+            names.push_back(entry.first);
+        fail(node,
+             what + " " + inQuotes(name) + " is not defined" + didYouMean(name, names) +
+                 (names.empty() ? std::string("; the scene's \"") + section + "\" defines none"
+                                : "; expected " + quotedNames(names)));
+    }
     [[noreturn]] void failAtKey(const Node& node, const std::string& message) const;
     void warn(const Node& node, const std::string& message) const;
     void checkKeys(const Node& object, const std::string& what,
@@ -839,12 +853,7 @@ const Material* SceneLoader::Reader::materialOf(const Node& object) {
     const std::string name = readString(node);
     const auto it = materials_.find(name);
     if (it != materials_.end()) return it->second;
-    std::vector<std::string> names;
-    for (const auto& entry : materials_)
-        names.push_back(entry.first);
-    fail(node, "material " + inQuotes(name) + " is not defined" + didYouMean(name, names) +
-                   (names.empty() ? "; the scene's \"materials\" defines none"
-                                  : "; expected " + quotedNames(names)));
+    failUndefined(node, "material", name, materials_, "materials");
 }
 
 void SceneLoader::Reader::loadObject(const Node& node) {
@@ -986,14 +995,7 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadGroupObject(
 const SceneLoader::Reader::Group& SceneLoader::Reader::groupNamed(const Node& name) {
     const std::string text = readString(name);
     const auto it = groups_.find(text);
-    if (it == groups_.end()) {
-        std::vector<std::string> names;
-        for (const auto& entry : groups_)
-            names.push_back(entry.first);
-        fail(name, "group " + inQuotes(text) + " is not defined" + didYouMean(text, names) +
-                       (names.empty() ? "; the scene's \"groups\" defines none"
-                                      : "; expected " + quotedNames(names)));
-    }
+    if (it == groups_.end()) failUndefined(name, "group", text, groups_, "groups");
     const auto reading = std::find(groupsBeingRead_.begin(), groupsBeingRead_.end(), text);
     if (reading != groupsBeingRead_.end()) {
         std::string cycle;
