@@ -42,8 +42,9 @@ LiveRender::~LiveRender() {
 void LiveRender::start() {
     RenderOptions options = options_;
     // Only the render that goes to the output writes auxiliary outputs; the views after it
-    // would compute them for nothing.
+    // would compute them for nothing. A resumed render is of the scene's camera only.
     if (status_) options.aovs.clear();
+    if (status_ || moved_) options.resumeFrom = nullptr;
     options.cancel = &cancel_;
     options.previewBlockSizes = kPreviewBlockSizes;
     options.onTileDone = [this](const FinishedTile& tile) {
@@ -68,7 +69,7 @@ RenderResult LiveRender::stop() {
     return result;
 }
 
-int LiveRender::run(const std::function<int(RenderResult&)>& deliver) {
+int LiveRender::run(const std::function<int(RenderResult&, bool)>& deliver) {
     start();
     for (;;) {
         bool close = options_.cancel && options_.cancel->load();
@@ -93,7 +94,7 @@ int LiveRender::run(const std::function<int(RenderResult&)>& deliver) {
         }
         if (finished_ && thread_.joinable()) {
             RenderResult result = stop();
-            if (!status_) status_ = deliver(result);
+            if (!status_) status_ = deliver(result, !moved_);
             // Once the output is written: a title saying "done" means the file is there.
             char done[96];
             std::snprintf(done, sizeof done, "done in %.2f s  (S: save, Esc: close)",
@@ -104,12 +105,13 @@ int LiveRender::run(const std::function<int(RenderResult&)>& deliver) {
         if (close) {
             if (thread_.joinable()) {
                 RenderResult result = stop();
-                if (!status_) status_ = deliver(result);
+                if (!status_) status_ = deliver(result, !moved_);
             }
             return *status_;
         }
         if (moved) {
             if (thread_.joinable()) stop();
+            moved_ = true;
             scene_.setCamera(orbit_.camera());
             start();
         }

@@ -34,8 +34,10 @@ public:
     // Runs until the window is closed. The first render that completes (the scene's camera,
     // unless the user moved it before) goes to `deliver` at once, and the window stays open; if
     // the window is closed before, the unfinished render goes to `deliver` then (which may
-    // change it: the window keeps its own copy). Returns what `deliver` returned.
-    int run(const std::function<int(RenderResult&)>& deliver);
+    // change it: the window keeps its own copy). `deliver` is told whether the render is of the
+    // scene's own camera (not moved by the user), and so may be resumed. Returns what `deliver`
+    // returned.
+    int run(const std::function<int(RenderResult&, bool sceneCamera)>& deliver);
 
 private:
     // Starts rendering the scene's camera in the background.
@@ -53,6 +55,7 @@ private:
     CameraOrbit orbit_;
     int snapshotCount_ = 0;
     std::optional<int> status_;  // what deliver returned, once it was called
+    bool moved_ = false;         // the user has moved the camera
 
     std::thread thread_;
     std::atomic<bool> cancel_{false};

@@ -27,8 +27,10 @@
 #include "TerminalSolve.h"
 #include "Viewer.h"
 #include "integrators/IntegratorRegistry.h"
+#include "io/Fingerprint.h"
 #include "io/ImageWriter.h"
 #include "io/InputFile.h"
+#include "io/ResumeFile.h"
 #include "io/SceneLoader.h"
 #include "radiosity/RadiositySolver.h"
 #include "render/Aov.h"
@@ -59,6 +61,7 @@ struct Options {
     bool window = false;
     bool quiet = false;
     bool stats = false;
+    bool resume = false;
     std::optional<std::string> saveRadiosity, loadRadiosity;
     std::optional<std::string> maxMemory;
 };
@@ -127,9 +130,9 @@ std::string unexpectedArguments(const CLI::App& app, int argc, char** argv,
 
 // The memory the image's buffers take, in bytes: the render's film and what the writer needs, and
 // the same for each auxiliary output; with the window, also its preview film, its own copy and
-// the 8-bit pixels it shows (ours and SDL's).
+// the 8-bit pixels it shows (ours and SDL's); when resuming, the resumed render's films.
 std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output,
-                          const std::vector<const Aov*>& aovs, bool window) {
+                          const std::vector<const Aov*>& aovs, bool window, bool resume) {
     const std::uint64_t pixels =
         static_cast<std::uint64_t>(settings.width) * static_cast<std::uint64_t>(settings.height);
     std::uint64_t bytes =
@@ -139,6 +142,7 @@ std::uint64_t imageMemory(const RenderSettings& settings, const fs::path& output
             pixels * sizeof(Color) +
             ImageWriter::memoryNeeded(aov->pathBeside(output), settings.width, settings.height);
     if (window) bytes += pixels * (2 * sizeof(Color) + 2 * 3);
+    if (resume) bytes += pixels * sizeof(Color) * (1 + aovs.size());
     return bytes;
 }
 
@@ -276,6 +280,33 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
     return solution;
 }
 
+// What the image depends on besides the work of rendering it: the program, the files the scene
+// was read from and the options that change the image (not --threads, --quiet or the output's
+// format: the film is saved before exposure and tone mapping).
+std::uint64_t renderFingerprint(const Scene& scene, const RenderOptions& renderOptions,
+                                const PixelWindow& window, const Options& options) {
+    Fingerprint f;
+    f.addText(BuildInfo::describe());
+#ifdef __linux__
+    f.addFile("/proc/self/exe");
+#endif
+    for (const fs::path& file : scene.sourceFiles())
+        f.addFile(file);
+    const RenderSettings& settings = scene.settings();
+    f.addNumber(static_cast<std::uint64_t>(settings.width))
+        .addNumber(static_cast<std::uint64_t>(settings.height))
+        .addNumber(static_cast<std::uint64_t>(settings.samplesPerPixel))
+        .addNumber(static_cast<std::uint64_t>(settings.maxDepth))
+        .addText(settings.integrator)
+        .addNumber(renderOptions.seed);
+    for (const int side : {window.x0, window.y0, window.x1, window.y1})
+        f.addNumber(static_cast<std::uint64_t>(side));
+    for (const Aov* aov : renderOptions.aovs)
+        f.addText(aov->name);
+    if (options.loadRadiosity) f.addFile(*options.loadRadiosity);
+    return f.value();
+}
+
 int run(const Options& options) {
     // Before anything is read: a signal while the scene loads ends the program cleanly.
     InterruptSignals::install();
@@ -339,7 +370,8 @@ int run(const Options& options) {
     // image that cannot fit before the first of them (or the radiosity solve) takes its time.
     // --max-memory replaces the machine's memory as the bound: higher where swap makes up the
     // rest, lower to keep a render from crowding others out.
-    const std::uint64_t needed = imageMemory(settings, output, aovs, options.window);
+    const std::uint64_t needed =
+        imageMemory(settings, output, aovs, options.window, options.resume);
     const std::uint64_t allowed =
         options.maxMemory ? *parseMemorySize(*options.maxMemory) : physicalMemory();
     if (allowed > 0 && needed > allowed)
@@ -364,6 +396,23 @@ int run(const Options& options) {
 
     if ((options.saveRadiosity || options.loadRadiosity) && settings.integrator != "radiosity")
         return usageError("--save-radiosity and --load-radiosity need --integrator radiosity");
+
+    // An interrupted render leaves its finished tiles in OUT.resume, which --resume finishes.
+    const PixelWindow window =
+        renderOptions.crop.value_or(PixelWindow{0, 0, settings.width, settings.height});
+    const std::uint64_t fingerprint = renderFingerprint(scene, renderOptions, window, options);
+    const fs::path resumePath = ResumeFile::pathBeside(output);
+    std::optional<RenderResult> resumed;
+    if (options.resume) {
+        if (fs::exists(resumePath)) {
+            resumed = ResumeFile::read(resumePath, fingerprint, settings.width, settings.height,
+                                       window, aovs.size());
+            renderOptions.resumeFrom = &*resumed;
+        } else if (!options.quiet) {
+            std::cerr << "lancer: --resume: there is no " << resumePath.string()
+                      << ", so the whole image is rendered\n";
+        }
+    }
 
     std::unique_ptr<Viewer> viewer;
     if (options.window) {
@@ -394,8 +443,18 @@ int run(const Options& options) {
 
     // Writes the image and its auxiliary outputs as soon as its render ends; returns the exit
     // status.
-    const auto deliver = [&](RenderResult& result) {
+    const auto deliver = [&](RenderResult& result, bool sceneCamera) {
         InterruptSignals::setPhase(InterruptSignals::Phase::Saving);
+        // The resume file first: the films are linear until mapped for the output.
+        bool resumable = false;
+        if (result.interrupted && sceneCamera) {
+            try {
+                ResumeFile::write(resumePath, fingerprint, window, result);
+                resumable = true;
+            } catch (const std::runtime_error& e) {
+                std::cerr << "lancer: error: " << e.what() << '\n';
+            }
+        }
         toneMapper.mapForOutput(result.film, ImageWriter::storesLinear(output));
         ImageWriter::write(result.film, output);
         for (std::size_t i = 0; i < aovs.size(); ++i)
@@ -403,9 +462,13 @@ int run(const Options& options) {
         InterruptSignals::setPhase(InterruptSignals::Phase::Working);
         if (result.interrupted) {
             std::cerr << "lancer: interrupted; the part rendered so far was written to "
-                      << output.string() << '\n';
+                      << output.string()
+                      << (resumable ? " (the same command with --resume finishes it)" : "") << '\n';
             return InterruptSignals::exitStatus();
         }
+        // A finished render needs its resume file no more.
+        std::error_code ignored;
+        fs::remove(resumePath, ignored);
         if (options.stats) printStatistics(scene, result.counters);
         if (!options.quiet)
             std::cerr << "lancer: " << output.string() << ": " << settings.width << "x"
@@ -428,7 +491,7 @@ int run(const Options& options) {
     };
     RenderResult result = Renderer(scene, *integrator).render(renderOptions);
     progress.finish();
-    return deliver(result);
+    return deliver(result, true);
 }
 
 }  // namespace
@@ -490,6 +553,10 @@ int main(int argc, char** argv) {
                    "any of " +
                        Aov::types().quotedNames() + ", separated by commas");
     app.add_flag("--window", options.window, "Show the image in a window while it renders");
+    app.add_flag("--resume", options.resume,
+                 "Finish the render that an interrupted run of the same command left in "
+                 "OUT.resume: only the missing tiles are rendered, and the image is the same as "
+                 "an uninterrupted render's");
     app.add_flag("--quiet", options.quiet, "No progress bar or summary, only errors");
     app.add_flag("--stats", options.stats,
                  "Print scene statistics: objects, triangles, memory per triangle");

@@ -2,6 +2,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "scene/InputError.h"
@@ -31,11 +32,38 @@ struct InputFile {
             throw tooLarge(path, kinds, maxBytes);
     }
 
+    // The bytes of a file that passes check(); InputError naming the file if it cannot be read
+    // (aKind, kinds as for check(): "a scene file", "scene files").
+    static std::string read(const std::filesystem::path& path, const std::string& aKind,
+                            const std::string& kinds, std::uintmax_t maxBytes) {
+        check(path, aKind, kinds, maxBytes);
+        std::ifstream in(path, std::ios::binary);
+        // "a scene file" -> "the scene file"
+        const std::string theKind = "the " + aKind.substr(aKind.find(' ') + 1);
+        if (!in) throw InputError(path.string(), "cannot open " + theKind + " (does it exist?)");
+        // Read in blocks, so that a pipe that never ends stops at the limit too; a file's bytes
+        // are given its size at once (not up to twice that by doubling).
+        std::string bytes;
+        std::error_code sizeUnknown;
+        if (const std::uintmax_t size = std::filesystem::file_size(path, sizeUnknown); !sizeUnknown)
+            bytes.reserve(static_cast<std::size_t>(size));
+        std::string block(1 << 16, '\0');
+        while (in.read(block.data(), static_cast<std::streamsize>(block.size())) ||
+               in.gcount() > 0) {
+            bytes.append(block.data(), static_cast<std::size_t>(in.gcount()));
+            if (bytes.size() > maxBytes) throw tooLarge(path, kinds, maxBytes);
+        }
+        return bytes;
+    }
+
     // The error of a file (or a pipe, found out while reading it) beyond its kind's limit.
     static InputError tooLarge(const std::filesystem::path& path, const std::string& kinds,
                                std::uintmax_t maxBytes) {
-        return InputError(path.string(), "is larger than the " + std::to_string(maxBytes / kGiB) +
-                                             " GiB limit for " + kinds);
+        // Limits that depend on the image (resume files) may be below a gibibyte.
+        const bool gibibytes = maxBytes >= kGiB;
+        const std::string limit = gibibytes ? std::to_string(maxBytes / kGiB) + " GiB"
+                                            : std::to_string(maxBytes) + " byte";
+        return InputError(path.string(), "is larger than the " + limit + " limit for " + kinds);
     }
 };
 

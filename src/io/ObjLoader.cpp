@@ -74,18 +74,21 @@ public:
         std::istringstream text(MtlMaterialConverter::markAbsentKeys(file));
         tinyobj::LoadMtl(materialIds, materials, &text, mtlWarnings, mtlErrors);
         files_.resize(materials->size(), path);
+        read_.push_back(path);
         return true;
     }
 
     bool anyNamed() const { return named_; }
     const std::vector<fs::path>& missingFiles() const { return missing_; }
     const fs::path& fileOf(std::size_t material) const { return files_[material]; }
+    const std::vector<fs::path>& filesRead() const { return read_; }
 
 private:
     fs::path objFolder_;
     bool named_ = false;
     std::vector<fs::path> missing_;
     std::vector<fs::path> files_;  // per material
+    std::vector<fs::path> read_;
 };
 
 struct ObjContents {
@@ -367,7 +370,8 @@ private:
 
 std::shared_ptr<TriangleMesh> ObjLoader::load(const fs::path& objPath,
                                               const TextureLoader& loadTexture,
-                                              std::vector<std::string>& warnings) {
+                                              std::vector<std::string>& warnings,
+                                              std::vector<fs::path>* materialFiles) {
     std::ifstream file = openObj(objPath);
     ObjContents obj = parseObj(file, objPath, /*triangulate=*/false);
     if (hasTruncatedFaceSizes(obj.shapes)) {
@@ -380,6 +384,9 @@ std::shared_ptr<TriangleMesh> ObjLoader::load(const fs::path& objPath,
     }
     const ParserFindings findings = readParserWarnings(obj.parserWarnings);
     reportMaterialProblems(obj, findings, objPath, warnings);
+    if (materialFiles)
+        materialFiles->insert(materialFiles->end(), obj.libraries.filesRead().begin(),
+                              obj.libraries.filesRead().end());
 
     MeshBuilder builder(obj, loadTexture, warnings);
     builder.addShortFaces(findings.shortFaces);

@@ -24,10 +24,11 @@ public:
     // Throws InputError naming the file when the OBJ itself is missing, unreadable, or unusable
     // (nothing in it can be rendered). Problems that still leave a mesh (a missing .mtl or
     // texture, faces dropped...) are appended to `warnings` as "file: warning: message", one per
-    // kind of problem.
-    static std::shared_ptr<TriangleMesh> load(const std::filesystem::path& objPath,
-                                              const TextureLoader& loadTexture,
-                                              std::vector<std::string>& warnings);
+    // kind of problem. With `materialFiles`, the MTL files read are added to it.
+    static std::shared_ptr<TriangleMesh> load(
+        const std::filesystem::path& objPath, const TextureLoader& loadTexture,
+        std::vector<std::string>& warnings,
+        std::vector<std::filesystem::path>* materialFiles = nullptr);
 };
 
 }  // namespace lancer

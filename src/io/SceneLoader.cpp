@@ -457,22 +457,7 @@ namespace {
 // The text of a scene file (or of a file it includes); InputError naming the file if it cannot be
 // read.
 std::string readSceneText(const std::filesystem::path& path) {
-    InputFile::check(path, "a scene file", "scene files", InputFile::kMaxSceneBytes);
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw InputError(path.string(), "cannot open the scene file (does it exist?)");
-    // Read in blocks, so that a pipe that never ends stops at the limit too; a file's text is
-    // given its size at once (not up to twice that by doubling).
-    std::string text;
-    std::error_code sizeUnknown;
-    if (const std::uintmax_t size = std::filesystem::file_size(path, sizeUnknown); !sizeUnknown)
-        text.reserve(static_cast<std::size_t>(size));
-    std::string block(1 << 16, '\0');
-    while (in.read(block.data(), static_cast<std::streamsize>(block.size())) || in.gcount() > 0) {
-        text.append(block.data(), static_cast<std::size_t>(in.gcount()));
-        if (text.size() > InputFile::kMaxSceneBytes)
-            throw InputFile::tooLarge(path, "scene files", InputFile::kMaxSceneBytes);
-    }
-    return text;
+    return InputFile::read(path, "a scene file", "scene files", InputFile::kMaxSceneBytes);
 }
 
 // What tells files apart however a path names them: the canonical path (or the path as given,
@@ -491,7 +476,9 @@ const std::vector<std::string> kSceneFileKeys{"render",      "camera",  "backgro
 }  // namespace
 
 Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
-    return loadString(readSceneText(path), path.string(), warnings);
+    Scene scene = loadString(readSceneText(path), path.string(), warnings);
+    scene.addSourceFile(path);
+    return scene;
 }
 
 Scene SceneLoader::loadString(const std::string& text, const std::string& fileName,
@@ -565,6 +552,7 @@ void SceneLoader::Reader::readIncludes(const Node& fragment, std::vector<Node>& 
         } catch (const InputError& e) {
             fail(entry, "include " + inQuotes(path.string()) + ": " + e.message());
         }
+        scene_.addSourceFile(path);
         // Its own mistakes are told at their place in it.
         const JsonDocument& document = *included_.emplace_back(
             std::make_unique<const JsonDocument>(JsonDocument::parse(text, path.string())));
@@ -921,7 +909,12 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadMeshObject(
                                         ImageReader::Content content) {
             return loadImageTexture(p, content);
         };
-        return ObjLoader::load(path, loadTexture, warnings_);
+        std::vector<std::filesystem::path> materialFiles;
+        std::shared_ptr<TriangleMesh> mesh =
+            ObjLoader::load(path, loadTexture, warnings_, &materialFiles);
+        for (const std::filesystem::path& file : materialFiles)
+            scene_.addSourceFile(file);
+        return mesh;
     };
     return loadModelObject(node, what, transform, "mesh", readModel);
 }
@@ -1044,6 +1037,7 @@ std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
         std::shared_ptr<TriangleMesh> triangles = read(path);
+        scene_.addSourceFile(path);
         if (smooth) SmoothingByAngle::apply(*triangles, *smooth);
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
         meshes_[key] = mesh;
@@ -1062,6 +1056,7 @@ std::shared_ptr<const Texture> SceneLoader::Reader::loadImageTexture(
                             std::to_string(static_cast<int>(content));
     if (const auto it = textures_.find(key); it != textures_.end()) return it->second;
     std::shared_ptr<const Texture> texture = ImageReader::readTexture(path, content);
+    scene_.addSourceFile(path);
     textures_[key] = texture;
     return texture;
 }
@@ -1149,6 +1144,7 @@ void SceneLoader::Reader::loadEnvironment(const Node& root) {
     } catch (const InputError& e) {
         fail(file, "environment map " + inQuotes(path.string()) + ": " + e.message());
     }
+    scene_.addSourceFile(path);
     auto environment =
         EnvironmentLight::create(ObjectParameters(*this, node, what), *std::move(map));
     environment->setShadowSamples(readShadowSamples(node));

@@ -7,6 +7,7 @@
 
 #include "geometry/Triangle.h"
 #include "scene/InputError.h"
+#include "util/ByteReader.h"
 
 namespace lancer {
 
@@ -15,46 +16,6 @@ namespace {
 constexpr char kMagic[16] = {'l', 'a', 'n', 'c', 'e', 'r', ' ', 'r',
                              'a', 'd', 'i', 'o', 's', 'i', 't', 'y'};
 constexpr std::uint32_t kVersion = 1;
-
-// Reads fixed-size values from the bytes of a file, failing on a short read.
-class Reader {
-public:
-    Reader(const std::string& bytes, const std::filesystem::path& path)
-        : bytes_(bytes), path_(path) {}
-
-    template <typename T>
-    T read() {
-        T value;
-        need(sizeof(T));
-        std::memcpy(&value, bytes_.data() + offset_, sizeof(T));
-        offset_ += sizeof(T);
-        return value;
-    }
-    float readFinite() {
-        const auto v = read<float>();
-        if (!std::isfinite(v)) fail("holds a value that is not a finite number");
-        return v;
-    }
-    // A count of records of `recordSize` bytes that must fit in what is left of the file.
-    std::uint64_t readCount(std::size_t recordSize) {
-        const auto count = read<std::uint64_t>();
-        if (count > (bytes_.size() - offset_) / recordSize) fail("is truncated");
-        return count;
-    }
-    bool atEnd() const { return offset_ == bytes_.size(); }
-    [[noreturn]] void fail(const std::string& what) const {
-        throw InputError(path_.string(), "the radiosity file " + what + " (damaged?)");
-    }
-
-private:
-    void need(std::size_t n) const {
-        if (bytes_.size() - offset_ < n) fail("is truncated");
-    }
-
-    const std::string& bytes_;
-    std::filesystem::path path_;
-    std::size_t offset_ = 0;
-};
 
 template <typename T>
 void write(std::ostream& out, const T& value) {
@@ -174,7 +135,9 @@ RadiositySolution RadiositySolution::load(const std::filesystem::path& path) {
                                                 std::to_string(kMaxFileBytes >> 30) +
                                                 " GiB limit for radiosity files");
     }
-    Reader reader(bytes, path);
+    ByteReader reader(bytes, [&](const std::string& what) {
+        throw InputError(path.string(), "the radiosity file " + what + " (damaged?)");
+    });
     if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0)
         throw InputError(path.string(), "not a lancer radiosity file");
     for (std::size_t i = 0; i < sizeof kMagic; ++i)

@@ -9,6 +9,7 @@
 #include "render/Aov.h"
 #include "render/FinishedTile.h"
 #include "render/PixelWindow.h"
+#include "render/RenderResult.h"
 
 namespace lancer {
 
@@ -27,6 +28,10 @@ struct RenderOptions {
     // The auxiliary outputs to render besides the image (RenderResult::aovFilms), none by
     // default.
     std::vector<const Aov*> aovs;
+    // An interrupted render of the same image (the same scene, settings, seed, crop and auxiliary
+    // outputs) to finish: its finished tiles are kept as they are and reported first, the others
+    // rendered. Its films must be the image's size, with one per auxiliary output.
+    const RenderResult* resumeFrom = nullptr;
     // Called under a lock after each tile, preview tiles included, in the order they finish;
     // every tile of a pass is reported before any of the next pass.
     std::function<void(const FinishedTile&)> onTileDone;

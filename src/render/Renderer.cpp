@@ -8,6 +8,8 @@
 #include <chrono>
 #include <cmath>
 #include <mutex>
+#include <optional>
+#include <stdexcept>
 #include <thread>
 #include <vector>
 
@@ -49,12 +51,12 @@ std::vector<PixelWindow> cutIntoTiles(const PixelWindow& window, int size) {
     return tiles;
 }
 
-// Runs renderTile(tile, counters) for every tile on as many oneTBB workers as the arena has
-// threads, each taking the next tile until none is left, so that tiles start in order whatever the
-// threads. renderTile returns false when it stopped early (cancelled), which stops its worker.
-// Returns the counts of all the workers.
+// Runs renderTile(t, counters) for every t < tileCount on as many oneTBB workers as the arena
+// has threads, each taking the next tile until none is left, so that tiles start in order
+// whatever the threads. renderTile returns false when it stopped early (cancelled), which stops
+// its worker. Returns the counts of all the workers.
 template <typename RenderTile>
-RenderCounters renderTilesInParallel(const std::vector<PixelWindow>& tiles, tbb::task_arena& arena,
+RenderCounters renderTilesInParallel(std::size_t tileCount, tbb::task_arena& arena,
                                      const RenderTile& renderTile) {
     std::atomic<std::size_t> nextTile{0};
     std::mutex totalMutex;
@@ -63,8 +65,8 @@ RenderCounters renderTilesInParallel(const std::vector<PixelWindow>& tiles, tbb:
         // Counted locally and added once: per-worker counters side by side in one array would
         // share a cache line that every ray writes to.
         RenderCounters counters;
-        for (std::size_t t; (t = nextTile.fetch_add(1)) < tiles.size();)
-            if (!renderTile(tiles[t], counters)) break;
+        for (std::size_t t; (t = nextTile.fetch_add(1)) < tileCount;)
+            if (!renderTile(t, counters)) break;
         std::lock_guard lock(totalMutex);
         total += counters;
     };
@@ -80,15 +82,32 @@ RenderCounters renderTilesInParallel(const std::vector<PixelWindow>& tiles, tbb:
 
 }  // namespace
 
+std::vector<PixelWindow> Renderer::tiles(const PixelWindow& window) {
+    return cutIntoTiles(window, kTileSize);
+}
+
 RenderResult Renderer::render(const RenderOptions& options) const {
     const auto start = std::chrono::steady_clock::now();
     const RenderSettings& settings = scene_.settings();
     const PixelWindow window =
         options.crop.value_or(PixelWindow{0, 0, settings.width, settings.height});
     const std::vector<PixelWindow> tiles =
-        options.previewOnly ? std::vector<PixelWindow>{} : cutIntoTiles(window, kTileSize);
+        options.previewOnly ? std::vector<PixelWindow>{} : Renderer::tiles(window);
 
     RenderResult result{Image(settings.width, settings.height)};
+    for (std::size_t i = 0; i < options.aovs.size(); ++i)
+        result.aovFilms.emplace_back(settings.width, settings.height);
+    result.finishedTiles.assign(tiles.size(), false);
+    if (const RenderResult* resumed = options.resumeFrom) {
+        if (resumed->finishedTiles.size() != tiles.size() ||
+            resumed->film.width() != settings.width || resumed->film.height() != settings.height ||
+            resumed->aovFilms.size() != options.aovs.size())
+            throw std::invalid_argument("the render to resume is not of this image");
+        result.film = resumed->film;
+        result.aovFilms = resumed->aovFilms;
+        result.finishedTiles = resumed->finishedTiles;
+        result.counters = resumed->counters;
+    }
     result.threads = options.threads > 0
                          ? options.threads
                          : std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
@@ -101,10 +120,15 @@ RenderResult Renderer::render(const RenderOptions& options) const {
     const auto cancelled = [&] {
         return options.cancel && options.cancel->load(std::memory_order_relaxed);
     };
-    const auto report = [&](const Image& film, const PixelWindow& tile, bool preview) {
+    // A preview tile, or with its index one of the image's tiles, finished.
+    const auto report = [&](const Image& film, const PixelWindow& tile,
+                            std::optional<std::size_t> imageTile) {
         std::lock_guard lock(reportMutex);
-        if (!preview) ++tilesDone;
-        if (options.onTileDone) options.onTileDone({film, tile, preview, tilesDone, tilesTotal});
+        if (imageTile) {
+            result.finishedTiles[*imageTile] = true;
+            ++tilesDone;
+        }
+        if (options.onTileDone) options.onTileDone({film, tile, !imageTile, tilesDone, tilesTotal});
     };
 
     // Each preview pass ends before the next begins, so that a coarser block never lands on a
@@ -113,27 +137,33 @@ RenderResult Renderer::render(const RenderOptions& options) const {
     if (!options.previewBlockSizes.empty()) {
         Image preview(settings.width, settings.height);
         for (const int blockSize : options.previewBlockSizes) {
+            const std::vector<PixelWindow> passTiles = cutIntoTiles(window, kTileSize * blockSize);
             result.counters += renderTilesInParallel(
-                cutIntoTiles(window, kTileSize * blockSize), arena,
-                [&](const PixelWindow& tile, RenderCounters& counters) {
-                    for (const PixelWindow& block : cutIntoTiles(tile, blockSize)) {
+                passTiles.size(), arena, [&](std::size_t t, RenderCounters& counters) {
+                    for (const PixelWindow& block : cutIntoTiles(passTiles[t], blockSize)) {
                         if (cancelled()) return false;
                         const Color c = previewSample(block, options.seed, counters.rays);
                         for (int y = block.y0; y < block.y1; ++y)
                             for (int x = block.x0; x < block.x1; ++x)
                                 preview.at(x, y) = c;
                     }
-                    report(preview, tile, true);
+                    report(preview, passTiles[t], std::nullopt);
                     return true;
                 });
         }
     }
 
-    for (std::size_t i = 0; i < options.aovs.size(); ++i)
-        result.aovFilms.emplace_back(settings.width, settings.height);
+    // The resumed render's tiles are reported as finished, then the others rendered.
+    std::vector<std::size_t> pending;
+    for (std::size_t t = 0; t < tiles.size(); ++t)
+        if (result.finishedTiles[t])
+            report(result.film, tiles[t], t);
+        else
+            pending.push_back(t);
     const bool withAovs = !options.aovs.empty();
     result.counters +=
-        renderTilesInParallel(tiles, arena, [&](const PixelWindow& tile, RenderCounters& counters) {
+        renderTilesInParallel(pending.size(), arena, [&](std::size_t p, RenderCounters& counters) {
+            const PixelWindow& tile = tiles[pending[p]];
             // Pixels go to the films only once their tile is complete, so that an interrupted
             // render holds whole tiles.
             const std::size_t pixelCount = static_cast<std::size_t>(tile.width() * tile.height());
@@ -154,7 +184,7 @@ RenderResult Renderer::render(const RenderOptions& options) const {
                     for (std::size_t i = 0; i < options.aovs.size(); ++i)
                         result.aovFilms[i].at(x, y) = options.aovs[i]->value(tileAovs[index(x, y)]);
                 }
-            report(result.film, tile, false);
+            report(result.film, tile, pending[p]);
             return true;
         });
 

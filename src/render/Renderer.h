@@ -22,6 +22,8 @@ public:
     RenderResult render(const RenderOptions& options) const;
 
     static constexpr int kTileSize = 16;
+    // The tiles a window is rendered in, row by row: what RenderResult::finishedTiles counts.
+    static std::vector<PixelWindow> tiles(const PixelWindow& window);
 
 private:
     // The preview's one ray for a block of pixels.

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -66,6 +67,11 @@ public:
     // The infinite shapes (planes), outside the BVH: radiosity meshes them too.
     const std::vector<std::unique_ptr<Shape>>& unboundedShapes() const { return unboundedShapes_; }
 
+    // The files the scene was read from: the scene file, its includes, models and their material
+    // files, textures and maps; a resumed render checks that none of them has changed.
+    void addSourceFile(const std::filesystem::path& path) { sourceFiles_.push_back(path); }
+    const std::vector<std::filesystem::path>& sourceFiles() const { return sourceFiles_; }
+
     Statistics& statistics() { return statistics_; }
     const Statistics& statistics() const { return statistics_; }
     std::size_t boundedShapeCount() const { return boundedShapes_.size(); }
@@ -105,6 +111,7 @@ private:
     bool hasTransmissiveMaterial_ = false;
     bool hasCutOuts_ = false;
     Statistics statistics_;
+    std::vector<std::filesystem::path> sourceFiles_;
     std::vector<std::unique_ptr<Light>> lights_;
 };
 

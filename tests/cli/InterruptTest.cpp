@@ -75,8 +75,9 @@ TEST_P(CliInterrupt, WritesTheFinishedPartAndExitsWithTheSignalsStatus) {
     EXPECT_EQ(run.exitStatus, GetParam().exitStatus) << run;
     EXPECT_NE(run.standardError.find("out.pfm"), std::string::npos)
         << "says where the image was written: " << run.standardError;
-    EXPECT_EQ(folder.entries(), (std::vector<std::string>{"out.pfm", "scene.json"}))
-        << "the image, and no temporary file";
+    EXPECT_EQ(folder.entries(),
+              (std::vector<std::string>{"out.pfm", "out.pfm.resume", "scene.json"}))
+        << "the image and its resume file, and no temporary file";
     expectPartialImage(folder);
 }
 
@@ -95,8 +96,8 @@ TEST(CliInterruptWithAovs, WritesThemWithTheFinishedPart) {
     lancer.sendSignal(SIGINT);
     const RunResult run = lancer.wait(std::chrono::seconds(20));
     EXPECT_EQ(run.exitStatus, 130) << run;
-    EXPECT_EQ(folder.entries(),
-              (std::vector<std::string>{"out.depth.exr", "out.pfm", "scene.json"}));
+    EXPECT_EQ(folder.entries(), (std::vector<std::string>{"out.depth.exr", "out.pfm",
+                                                          "out.pfm.resume", "scene.json"}));
     expectPartialImage(folder);
     const Image image = loadImage(folder / "out.pfm");
     const Image depth = loadImage(folder / "out.depth.exr");
@@ -126,8 +127,9 @@ TEST(CliInterruptAgain, MoreCtrlCsWhileItStopsAndSavesAreHarmless) {
     const RunResult run = lancer.wait(std::chrono::seconds(1));
 
     EXPECT_EQ(run.exitStatus, 130) << run;
-    EXPECT_EQ(folder.entries(), (std::vector<std::string>{"out.pfm", "scene.json"}))
-        << "the image, and no temporary file";
+    EXPECT_EQ(folder.entries(),
+              (std::vector<std::string>{"out.pfm", "out.pfm.resume", "scene.json"}))
+        << "the image and its resume file, and no temporary file";
     expectPartialImage(folder);
 }
 

@@ -250,7 +250,8 @@ TEST_P(StoppedMidRender, SavesTheFinishedTilesAndExits130AsCtrlCDoes) {
                                      "out.pfm"),
               std::string::npos)
         << run;
-    EXPECT_EQ(folder_.entries(), (std::vector<std::string>{"out.pfm", "scene.json"}));
+    EXPECT_EQ(folder_.entries(),
+              (std::vector<std::string>{"out.pfm", "out.pfm.resume", "scene.json"}));
     const Image image = loadImage(folder_ / "out.pfm");
     // Every rendered pixel of this scene is lit at least by the ambient light: black is "not
     // rendered", and what the preview showed there is not saved.

@@ -1,0 +1,94 @@
+// --resume: an interrupted render leaves OUT.resume; the same command with --resume renders only
+// what is missing and gives the uninterrupted render's bytes; a resume file made for another
+// render, or damaged, is refused with one line and exit status 2.
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "LancerRun.h"
+
+#ifndef _WIN32
+#include <csignal>
+#include <thread>
+
+namespace lancer::test {
+namespace {
+
+const std::vector<std::string> kRender = {"scene.json", "-o",        "out.pfm", "--width",
+                                          "320",        "--height",  "240",     "--spp",
+                                          "64",         "--threads", "2",       "--quiet"};
+
+std::vector<std::string> with(std::vector<std::string> arguments,
+                              const std::vector<std::string>& more) {
+    arguments.insert(arguments.end(), more.begin(), more.end());
+    return arguments;
+}
+
+// Starts the render, interrupts it after `delay`, and returns once it has left its resume file.
+void interruptedRender(const TempFolder& folder, std::chrono::milliseconds delay) {
+    LancerProcess lancer(kRender, folder.path());
+    std::this_thread::sleep_for(delay);
+    lancer.sendSignal(SIGINT);
+    const RunResult run = lancer.wait(std::chrono::seconds(30));
+    ASSERT_EQ(run.exitStatus, 130) << run << " (the render ended before the signal?)";
+    ASSERT_TRUE(fs::exists(folder / "out.pfm.resume")) << run;
+}
+
+class CliResume : public testing::TestWithParam<int> {};
+
+TEST_P(CliResume, FinishesTheImageBitForBit) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const RunResult whole = runLancer(kRender, folder.path());
+    ASSERT_EQ(whole.exitStatus, 0) << whole;
+    fs::rename(folder / "out.pfm", folder / "whole.pfm");
+
+    interruptedRender(folder, std::chrono::milliseconds(GetParam()));
+    const RunResult resumed = runLancer(with(kRender, {"--resume"}), folder.path());
+    ASSERT_EQ(resumed.exitStatus, 0) << resumed;
+    EXPECT_EQ(readFile(folder / "out.pfm"), readFile(folder / "whole.pfm"));
+    EXPECT_FALSE(fs::exists(folder / "out.pfm.resume")) << "deleted once the image is finished";
+}
+
+// Early and later interruptions (the render takes a few seconds in a release build).
+INSTANTIATE_TEST_SUITE_P(Delays, CliResume, testing::Values(300, 1200));
+
+TEST(CliResumeRefuses, AnotherRenderOrADamagedFile) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    interruptedRender(folder, std::chrono::milliseconds(500));
+    const std::string saved = readFile(folder / "out.pfm.resume");
+
+    for (const auto& option : std::vector<std::vector<std::string>>{
+             {"--seed", "7"}, {"--max-depth", "2"}, {"--aov", "depth"}, {"--crop", "0,0,64,64"}}) {
+        const RunResult run = runLancer(with(kRender, with(option, {"--resume"})), folder.path());
+        EXPECT_EQ(run.exitStatus, 2) << option[0] << ": " << run;
+        ASSERT_EQ(run.errorLines().size(), 1u) << run;
+        EXPECT_NE(run.standardError.find("out.pfm.resume: error: the resume file was made for "
+                                         "another render"),
+                  std::string::npos)
+            << run;
+    }
+    const auto refusedWith = [&](const std::string& bytes, const std::string& message) {
+        {
+            std::ofstream out(folder / "out.pfm.resume", std::ios::binary | std::ios::trunc);
+            out << bytes;
+        }
+        const RunResult run = runLancer(with(kRender, {"--resume"}), folder.path());
+        EXPECT_EQ(run.exitStatus, 2) << run;
+        ASSERT_EQ(run.errorLines().size(), 1u) << run;
+        EXPECT_NE(run.standardError.find(message), std::string::npos) << run;
+    };
+    refusedWith(saved.substr(0, saved.size() / 2), "damaged");
+    std::string altered = saved;
+    altered[altered.size() / 2] ^= 1;
+    refusedWith(altered, "damaged");
+    refusedWith("P3\n1 1\n", "not a lancer resume file");
+    refusedWith("", "not a lancer resume file");
+}
+
+}  // namespace
+}  // namespace lancer::test
+
+#endif
