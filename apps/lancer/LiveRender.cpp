@@ -42,9 +42,10 @@ LiveRender::~LiveRender() {
 void LiveRender::start() {
     RenderOptions options = options_;
     // Only the render that goes to the output writes auxiliary outputs; the views after it
-    // would compute them for nothing. A resumed render is of the scene's camera only.
+    // would compute them for nothing. A resumed render is of the scene's camera only (the views
+    // after the first render are all of a moved camera).
     if (status_) options.aovs.clear();
-    if (status_ || moved_) options.resumeFrom = nullptr;
+    if (moved_) options.resumeFrom = nullptr;
     options.cancel = &cancel_;
     options.previewBlockSizes = kPreviewBlockSizes;
     options.onTileDone = [this](const FinishedTile& tile) {

@@ -1,6 +1,5 @@
 #pragma once
 
-#include <bit>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -19,7 +18,6 @@ public:
         hash_ = extendHash(hash_, v);
         return *this;
     }
-    Fingerprint& addReal(double v) { return addNumber(std::bit_cast<std::uint64_t>(v)); }
     Fingerprint& addText(std::string_view bytes) {
         addNumber(bytes.size());
         std::size_t i = 0;

@@ -1,11 +1,11 @@
 #include "io/ResumeFile.h"
 
 #include <cstring>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 #include <string_view>
 
+#include "io/AtomicFile.h"
 #include "io/Fingerprint.h"
 #include "io/InputFile.h"
 #include "render/Renderer.h"
@@ -27,6 +27,7 @@ struct Header {
     std::uint32_t aovCount, tileCount;
     std::uint64_t rays, samples, pixels, nonFiniteSamples;
 };
+static_assert(sizeof(Header) == 72, "no padding: every byte of the file is checksummed");
 
 template <typename T>
 void append(std::string& bytes, const T& value) {
@@ -90,25 +91,7 @@ void ResumeFile::write(const std::filesystem::path& path, std::uint64_t fingerpr
     }
     append(bytes, checksum(bytes));
 
-    std::filesystem::path temporary = path;
-    temporary += ".tmp";
-    const std::string failure = path.string() + ": cannot write the resume file";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out || !out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())) ||
-            !out.flush()) {
-            out.close();
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            throw std::runtime_error(failure);
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::filesystem::remove(temporary, error);
-        throw std::runtime_error(failure);
-    }
+    AtomicFile::write(path, bytes.data(), bytes.size(), "resume file");
 }
 
 RenderResult ResumeFile::read(const std::filesystem::path& path, std::uint64_t fingerprint,

@@ -19,8 +19,8 @@ public:
     static std::filesystem::path pathBeside(const std::filesystem::path& output);
 
     // Writes the finished tiles of `partial`, a render of `window` (Renderer::tiles(window)),
-    // atomically: a temporary file renamed over `path`, so that a resume file is whole or absent.
-    // Throws std::runtime_error when it cannot.
+    // atomically (AtomicFile), so that a resume file is whole or absent. Throws
+    // std::runtime_error when it cannot.
     static void write(const std::filesystem::path& path, std::uint64_t fingerprint,
                       const PixelWindow& window, const RenderResult& partial);
 
@@ -32,7 +32,8 @@ public:
                              int width, int height, const PixelWindow& window,
                              std::size_t aovCount);
 
-    // No resume file is larger: a full image of the largest size with this many auxiliary outputs.
+    // No resume file of a width x height image with this many auxiliary outputs is larger: every
+    // tile finished.
     static std::uintmax_t maxBytes(int width, int height, std::size_t aovCount);
 };
 
