@@ -15,6 +15,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <exception>
 #include <fstream>
 #include <limits>
@@ -119,6 +120,16 @@ private:
         std::string line = data_.substr(at_, end - at_);
         if (!line.empty() && line.back() == '\r') line.pop_back();
         at_ = std::min(end + 1, data_.size());
+        ++lineNumber_;
+        // Text and tabs only: Assimp's header parser loops for ever on a line that starts with a
+        // carriage return, a vertical tab or a form feed (found by fuzz_ply).
+        for (const char c : line)
+            if (static_cast<unsigned char>(c) < 0x20 && c != '\t') {
+                char code[8];
+                std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned char>(c));
+                fail("header line " + std::to_string(lineNumber_) +
+                     " holds the control character " + code);
+            }
         return line;
     }
 
@@ -144,6 +155,7 @@ private:
     const fs::path& path_;
     const std::string& data_;
     std::size_t at_ = 0;
+    int lineNumber_ = 0;  // of the line last read
 };
 
 // Walks the body element by element, so that a body shorter than its header says is an error
