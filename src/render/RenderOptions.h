@@ -10,6 +10,7 @@
 #include "render/FinishedTile.h"
 #include "render/PixelWindow.h"
 #include "render/RenderResult.h"
+#include "render/TileQueue.h"
 
 namespace lancer {
 
@@ -32,6 +33,9 @@ struct RenderOptions {
     // outputs) to finish: its finished tiles are kept as they are and reported first, the others
     // rendered. Its films must be the image's size, with one per auxiliary output.
     const RenderResult* resumeFrom = nullptr;
+    // Where the image's tiles come from: by default every tile not finished (PendingTiles), in
+    // order; a cluster render's queue shares them out between processes.
+    TileQueue* tileQueue = nullptr;
     // Called under a lock after each tile, preview tiles included, in the order they finish;
     // every tile of a pass is reported before any of the next pass.
     std::function<void(const FinishedTile&)> onTileDone;

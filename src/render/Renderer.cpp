@@ -5,8 +5,10 @@
 #include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <stdexcept>
@@ -14,6 +16,7 @@
 #include <vector>
 
 #include "render/Integrator.h"
+#include "render/PendingTiles.h"
 #include "sampling/Sampler.h"
 #include "scene/Scene.h"
 
@@ -51,22 +54,21 @@ std::vector<PixelWindow> cutIntoTiles(const PixelWindow& window, int size) {
     return tiles;
 }
 
-// Runs renderTile(t, counters) for every t < tileCount on as many oneTBB workers as the arena
-// has threads, each taking the next tile until none is left, so that tiles start in order
-// whatever the threads. renderTile returns false when it stopped early (cancelled), which stops
-// its worker. Returns the counts of all the workers.
-template <typename RenderTile>
-RenderCounters renderTilesInParallel(std::size_t tileCount, tbb::task_arena& arena,
+// Runs renderTile(t, counters) for every tile t that nextTile() hands out, on as many oneTBB
+// workers as the arena has threads, each taking the next tile until none is left, so that tiles
+// start in order whatever the threads. renderTile returns false when it stopped early (cancelled),
+// which stops its worker. Returns the counts of all the workers.
+template <typename NextTile, typename RenderTile>
+RenderCounters renderTilesInParallel(const NextTile& nextTile, tbb::task_arena& arena,
                                      const RenderTile& renderTile) {
-    std::atomic<std::size_t> nextTile{0};
     std::mutex totalMutex;
     RenderCounters total;
     const auto worker = [&] {
         // Counted locally and added once: per-worker counters side by side in one array would
         // share a cache line that every ray writes to.
         RenderCounters counters;
-        for (std::size_t t; (t = nextTile.fetch_add(1)) < tileCount;)
-            if (!renderTile(t, counters)) break;
+        while (const std::optional<std::size_t> t = nextTile())
+            if (!renderTile(*t, counters)) break;
         std::lock_guard lock(totalMutex);
         total += counters;
     };
@@ -78,6 +80,14 @@ RenderCounters renderTilesInParallel(std::size_t tileCount, tbb::task_arena& are
             tbb::simple_partitioner());
     });
     return total;
+}
+
+// A tile counter for the preview passes: 0, 1, ... tileCount - 1.
+auto countTo(std::size_t tileCount) {
+    return [tileCount, next = std::make_shared<std::atomic<std::size_t>>(0)] {
+        const std::size_t t = next->fetch_add(1);
+        return t < tileCount ? std::optional<std::size_t>(t) : std::nullopt;
+    };
 }
 
 }  // namespace
@@ -128,7 +138,8 @@ RenderResult Renderer::render(const RenderOptions& options) const {
             result.finishedTiles[*imageTile] = true;
             ++tilesDone;
         }
-        if (options.onTileDone) options.onTileDone({film, tile, !imageTile, tilesDone, tilesTotal});
+        if (options.onTileDone)
+            options.onTileDone({film, result.aovFilms, tile, imageTile, tilesDone, tilesTotal});
     };
 
     // Each preview pass ends before the next begins, so that a coarser block never lands on a
@@ -139,7 +150,7 @@ RenderResult Renderer::render(const RenderOptions& options) const {
         for (const int blockSize : options.previewBlockSizes) {
             const std::vector<PixelWindow> passTiles = cutIntoTiles(window, kTileSize * blockSize);
             result.counters += renderTilesInParallel(
-                passTiles.size(), arena, [&](std::size_t t, RenderCounters& counters) {
+                countTo(passTiles.size()), arena, [&](std::size_t t, RenderCounters& counters) {
                     for (const PixelWindow& block : cutIntoTiles(passTiles[t], blockSize)) {
                         if (cancelled()) return false;
                         const Color c = previewSample(block, options.seed, counters.rays);
@@ -153,17 +164,18 @@ RenderResult Renderer::render(const RenderOptions& options) const {
         }
     }
 
-    // The resumed render's tiles are reported as finished, then the others rendered.
-    std::vector<std::size_t> pending;
+    // The resumed render's tiles are reported as finished, then the others rendered, in the
+    // order the queue hands them out.
     for (std::size_t t = 0; t < tiles.size(); ++t)
-        if (result.finishedTiles[t])
-            report(result.film, tiles[t], t);
-        else
-            pending.push_back(t);
+        if (result.finishedTiles[t]) report(result.film, tiles[t], t);
+    std::optional<PendingTiles> pendingTiles;
+    TileQueue& queue =
+        options.tileQueue ? *options.tileQueue : pendingTiles.emplace(result.finishedTiles);
     const bool withAovs = !options.aovs.empty();
-    result.counters +=
-        renderTilesInParallel(pending.size(), arena, [&](std::size_t p, RenderCounters& counters) {
-            const PixelWindow& tile = tiles[pending[p]];
+    result.counters += renderTilesInParallel(
+        [&] { return queue.next(); }, arena,
+        [&](std::size_t t, RenderCounters& counters) {
+            const PixelWindow& tile = tiles[t];
             // Pixels go to the films only once their tile is complete, so that an interrupted
             // render holds whole tiles.
             const std::size_t pixelCount = static_cast<std::size_t>(tile.width() * tile.height());
@@ -184,11 +196,13 @@ RenderResult Renderer::render(const RenderOptions& options) const {
                     for (std::size_t i = 0; i < options.aovs.size(); ++i)
                         result.aovFilms[i].at(x, y) = options.aovs[i]->value(tileAovs[index(x, y)]);
                 }
-            report(result.film, tile, pending[p]);
+            report(result.film, tile, t);
             return true;
         });
 
-    result.interrupted = tilesDone < tilesTotal;
+    // A tile left unfinished was cancelled, or (in a cluster render) rendered elsewhere.
+    result.interrupted = std::find(result.finishedTiles.begin(), result.finishedTiles.end(),
+                                   false) != result.finishedTiles.end();
     result.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;

@@ -54,13 +54,13 @@ TEST(PreviewPass, CoarsePassesComeFirstCoverTheImageAndLeaveItUnchanged) {
     std::vector<int> coverage(kWidth * kHeight, 0);
     int previewTiles = 0;
     live.onTileDone = [&](const FinishedTile& done) {
-        reports.push_back({done.tile, done.preview, done.tilesDone});
+        reports.push_back({done.tile, done.preview(), done.tilesDone});
         for (int y = done.tile.y0; y < done.tile.y1; ++y)
             for (int x = done.tile.x0; x < done.tile.x1; ++x) {
                 shown.at(x, y) = done.film.at(x, y);
                 ++coverage[static_cast<std::size_t>(y * kWidth + x)];
             }
-        if (done.preview) {
+        if (done.preview()) {
             // A block holds one value. The 8 x 8 pass has tiles of 128 x 128 pixels: one here.
             const PixelWindow& t = done.tile;
             const int block = previewTiles++ == 0 ? 8 : 2;
@@ -102,7 +102,7 @@ TEST(PreviewPass, ACancelledRenderHoldsNoPreviewPixels) {
     options.previewBlockSizes = {8, 2};
     int previews = 0;
     options.onTileDone = [&](const FinishedTile& done) {
-        previews += done.preview ? 1 : 0;
+        previews += done.preview() ? 1 : 0;
         cancel = true;  // after the first preview tile
     };
     const RenderResult result = Renderer(scene, *integrator).render(options);
