@@ -9,6 +9,7 @@ packages=(
     libcli11-dev libtbb-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     xvfb xauth libx11-dev libxtst-dev
+    libopenmpi-dev openmpi-bin  # mpirun: optional for the build, its tests run when found
     povray libembree-dev hyperfine
     clang libclang-rt-14-dev  # libFuzzer (scripts/fuzz.sh); the runtime is packaged apart on Debian 12
 )

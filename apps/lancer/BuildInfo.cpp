@@ -4,6 +4,7 @@
 #include <CLI/Version.hpp>
 
 #include "Viewer.h"
+#include "cluster/Cluster.h"
 #include "io/IoLibraries.h"
 
 namespace lancer {
@@ -48,8 +49,9 @@ const char* simdLevel() {
 
 std::string BuildInfo::describe() {
     return std::string("lancer ") + LANCER_VERSION + "\nbuilt with " + compiler() + " for " +
-           simdLevel() + ", without MPI\nlibraries: " + IoLibraries::versions() + ", " +
-           Viewer::libraryVersion() + ", oneTBB " + TBB_VERSION_STRING + ", CLI11 " + CLI11_VERSION;
+           simdLevel() + ", " + Cluster::describe() + "\nlibraries: " + IoLibraries::versions() +
+           ", " + Viewer::libraryVersion() + ", oneTBB " + TBB_VERSION_STRING + ", CLI11 " +
+           CLI11_VERSION;
 }
 
 }  // namespace lancer

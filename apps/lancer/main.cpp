@@ -26,6 +26,7 @@
 #include "ProgressBar.h"
 #include "TerminalSolve.h"
 #include "Viewer.h"
+#include "cluster/Cluster.h"
 #include "integrators/IntegratorRegistry.h"
 #include "io/Fingerprint.h"
 #include "io/ImageWriter.h"
@@ -307,7 +308,17 @@ std::uint64_t renderFingerprint(const Scene& scene, const RenderOptions& renderO
     return f.value();
 }
 
-int run(const Options& options) {
+int run(Options options, Cluster& cluster) {
+    // In a cluster render the leader alone reports, reads the resume file and writes.
+    if (!cluster.leader()) {
+        options.quiet = true;
+        options.stats = false;
+        options.resume = false;
+        options.saveRadiosity.reset();
+    }
+    if (cluster.size() > 1 && options.window)
+        return usageError("--window shows one process's render: it cannot be used under mpirun (" +
+                          std::to_string(cluster.size()) + " processes)");
     // Before anything is read: a signal while the scene loads ends the program cleanly.
     InterruptSignals::install();
     // Beyond the file-size limit (ulimit -f) a write fails with EFBIG, reported as a failed
@@ -338,11 +349,11 @@ int run(const Options& options) {
     }
     const fs::path outputFolder =
         output.parent_path().empty() ? fs::path(".") : output.parent_path();
-    if (!fs::is_directory(outputFolder))
+    if (cluster.leader() && !fs::is_directory(outputFolder))
         return fail(kExitFailure, "lancer: error: " + output.string() +
                                       ": cannot write the image (folder " + outputFolder.string() +
                                       " does not exist)");
-    if (fs::is_directory(output))
+    if (cluster.leader() && fs::is_directory(output))
         return fail(kExitFailure, "lancer: error: " + output.string() +
                                       ": cannot write the image (it is a folder)");
     std::vector<const Aov*> aovs;
@@ -441,6 +452,9 @@ int run(const Options& options) {
         return InterruptSignals::exitStatus();
     }
 
+    // Every process is ready, or all of them stop here.
+    if (const int status = cluster.settle(0); status != 0) return status;
+
     // Writes the image and its auxiliary outputs as soon as its render ends; returns the exit
     // status.
     const auto deliver = [&](RenderResult& result, bool sceneCamera) {
@@ -475,6 +489,9 @@ int run(const Options& options) {
                       << settings.height << ", " << describeSamples(settings, result.counters)
                       << ", " << result.threads
                       << (result.threads == 1 ? " thread, " : " threads, ")
+                      << (result.processes > 1
+                              ? "in " + std::to_string(result.processes) + " processes, "
+                              : "")
                       << describeRate(result.counters.rays, result.seconds) << '\n';
         return 0;
     };
@@ -486,17 +503,47 @@ int run(const Options& options) {
             .run(deliver);
     }
     ProgressBar progress(!options.quiet && isatty(STDERR_FILENO));
-    renderOptions.onTileDone = [&](const FinishedTile& tile) {
-        progress.update(tile.tilesDone, tile.tilesTotal);
-    };
-    RenderResult result = Renderer(scene, *integrator).render(renderOptions);
+    RenderResult result =
+        cluster.render(Renderer(scene, *integrator), renderOptions, settings.width, settings.height,
+                       [&](int done, int total) { progress.update(done, total); });
     progress.finish();
+    if (!cluster.leader())
+        return InterruptSignals::requested() ? InterruptSignals::exitStatus() : 0;
     return deliver(result, true);
+}
+
+// Runs `run` with the exceptions it may throw turned into their exit status and message.
+int runReporting(const Options& options, Cluster& cluster) {
+    try {
+        return run(options, cluster);
+    } catch (const InputError& e) {
+        return fail(kExitBadInput, e.what());
+    } catch (const std::exception& e) {
+        return fail(kExitFailure, std::string("lancer: error: ") + e.what());
+    }
+}
+
+// The command line's status: none when it is fine and run() should follow.
+std::optional<int> parseCommandLine(CLI::App& app, int argc, char** argv) {
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ExtrasError& e) {
+        return usageError(unexpectedArguments(app, argc, argv, e));
+    } catch (const CLI::ParseError& e) {
+        return usageError(std::string(e.what()) + " (see lancer --help)");
+    }
+    return std::nullopt;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
+    // Under mpirun, this process is one of a cluster; otherwise a cluster of one.
+    Cluster cluster(argc, argv);
     Options options;
     CLI::App app{
         "lancer: a CPU ray tracer. Renders SCENE.json to an image by Whitted ray tracing, path "
@@ -575,23 +622,8 @@ int main(int argc, char** argv) {
             },
             ""));
 
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForVersion& e) {
-        return app.exit(e);
-    } catch (const CLI::ExtrasError& e) {
-        return usageError(unexpectedArguments(app, argc, argv, e));
-    } catch (const CLI::ParseError& e) {
-        return usageError(std::string(e.what()) + " (see lancer --help)");
-    }
-
-    try {
-        return run(options);
-    } catch (const InputError& e) {
-        return fail(kExitBadInput, e.what());
-    } catch (const std::exception& e) {
-        return fail(kExitFailure, std::string("lancer: error: ") + e.what());
-    }
+    std::optional<int> status = parseCommandLine(app, argc, argv);
+    if (!status) status = runReporting(options, cluster);
+    // A failure before every process was ready ends them all, reported once.
+    return cluster.finish(cluster.settle(*status));
 }

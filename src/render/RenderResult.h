@@ -18,7 +18,8 @@ struct RenderResult {
     // tiles included).
     RenderCounters counters{};
     double seconds = 0;  // this render's, without a resumed render's
-    int threads = 0;
+    int threads = 0;     // in all processes
+    int processes = 1;   // a cluster render's (Cluster)
 };
 
 }  // namespace lancer

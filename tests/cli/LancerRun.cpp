@@ -54,7 +54,9 @@ std::ostream& operator<<(std::ostream& out, const RunResult& run) {
 
 #ifndef _WIN32
 
-LancerArguments::LancerArguments(const std::vector<std::string>& arguments) : strings_{LANCER_EXE} {
+LancerArguments::LancerArguments(const std::vector<std::string>& arguments,
+                                 const std::string& program)
+    : strings_{program} {
     strings_.insert(strings_.end(), arguments.begin(), arguments.end());
     for (std::string& argument : strings_)
         pointers_.push_back(argument.data());
@@ -62,10 +64,11 @@ LancerArguments::LancerArguments(const std::vector<std::string>& arguments) : st
 }
 
 LancerProcess::LancerProcess(const std::vector<std::string>& arguments,
-                             const fs::path& workingFolder, std::size_t fileSizeLimit) {
+                             const fs::path& workingFolder, std::size_t fileSizeLimit,
+                             const std::string& program) {
     // Everything the child needs is prepared before fork(): after it, only async-signal-safe
     // calls are allowed.
-    LancerArguments argv(arguments);
+    LancerArguments argv(arguments, program);
     const std::string folder = workingFolder.string();
     const std::string stdoutPath = (captureFolder_ / "stdout").string();
     const std::string stderrPath = (captureFolder_ / "stderr").string();

@@ -48,7 +48,9 @@ RunResult runLancer(const std::vector<std::string>& arguments, const fs::path& w
 // async-signal-safe calls are allowed.
 class LancerArguments {
 public:
-    explicit LancerArguments(const std::vector<std::string>& arguments);
+    // `program` runs with `arguments`: lancer, or a launcher such as mpirun given lancer's path.
+    explicit LancerArguments(const std::vector<std::string>& arguments,
+                             const std::string& program = LANCER_EXE);
     // The pointers point into this object.
     LancerArguments(const LancerArguments&) = delete;
     LancerArguments& operator=(const LancerArguments&) = delete;
@@ -67,7 +69,8 @@ public:
     // `fileSizeLimit` (bytes, 0 for none) bounds the files lancer may write (RLIMIT_FSIZE): a
     // write past it fails as on a full disk.
     LancerProcess(const std::vector<std::string>& arguments, const fs::path& workingFolder,
-                  std::size_t fileSizeLimit = 0);
+                  std::size_t fileSizeLimit = 0, const std::string& program = LANCER_EXE);
+    int pid() const { return pid_; }
     ~LancerProcess();  // kills the process if it is still running
     LancerProcess(const LancerProcess&) = delete;
     LancerProcess& operator=(const LancerProcess&) = delete;

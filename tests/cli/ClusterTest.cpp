@@ -1,0 +1,206 @@
+// mpirun -np N lancer ...: the processes share out the tiles, the leader writes the output, and
+// the file is the same, byte for byte, as one process's, for every integrator and N. Ctrl-C under
+// mpirun saves what was finished (and --resume under mpirun finishes it), a scene error is
+// reported once, and a process killed mid-render stops the run within seconds.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <thread>
+
+#include "LancerRun.h"
+
+namespace lancer::test {
+namespace {
+
+// mpirun, with as many processes as asked on this machine whatever its cores; Open MPI refuses
+// to run as root (CI's containers) unless told.
+std::vector<std::string> mpirun(int processes, const std::vector<std::string>& arguments) {
+    setenv("OMPI_ALLOW_RUN_AS_ROOT", "1", 1);
+    setenv("OMPI_ALLOW_RUN_AS_ROOT_CONFIRM", "1", 1);
+    std::vector<std::string> all = {"--oversubscribe", "-np", std::to_string(processes),
+                                    LANCER_EXE};
+    all.insert(all.end(), arguments.begin(), arguments.end());
+    return all;
+}
+
+RunResult runUnderMpirun(int processes, const std::vector<std::string>& arguments,
+                         const fs::path& folder) {
+    return LancerProcess(mpirun(processes, arguments), folder, 0, LANCER_MPIRUN).wait();
+}
+
+std::vector<std::string> concat(std::vector<std::string> a, const std::vector<std::string>& b) {
+    a.insert(a.end(), b.begin(), b.end());
+    return a;
+}
+
+struct ClusterCase {
+    std::string name;
+    std::vector<std::string> options;  // besides the scene, the output and --quiet
+    nlohmann::json render;             // merged into the whitted scene's "render" block
+    std::string output = "out.pfm";
+};
+
+std::ostream& operator<<(std::ostream& out, const ClusterCase& c) {
+    return out << c.name;
+}
+
+const std::vector<std::string> kSmall = {"--width", "96", "--height", "72", "--spp", "4"};
+
+class CliCluster : public testing::TestWithParam<ClusterCase> {};
+
+TEST_P(CliCluster, TwoThreeAndFourProcessesWriteTheBytesOfOne) {
+    const ClusterCase& c = GetParam();
+    nlohmann::json scene = loadWhittedScene();
+    scene["render"].merge_patch(c.render);
+    // A short radiosity solve: each process solves it, identically.
+    scene["radiosity"] = {{"max_shots", 40}};
+    const TempFolder folder;
+    folder.write("scene.json", scene.dump());
+    const std::vector<std::string> arguments =
+        concat({"scene.json", "-o", c.output, "--quiet", "--threads", "1"}, c.options);
+    const RunResult alone = runLancer(arguments, folder.path());
+    ASSERT_EQ(alone.exitStatus, 0) << alone;
+    const std::string expected = readFile(folder / c.output);
+    for (const int processes : {2, 3, 4}) {
+        fs::remove(folder / c.output);
+        const RunResult run = runUnderMpirun(processes, arguments, folder.path());
+        ASSERT_EQ(run.exitStatus, 0) << processes << " processes: " << run;
+        EXPECT_TRUE(readFile(folder / c.output) == expected)
+            << processes << " processes: the file differs from one process's";
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Renders, CliCluster,
+    testing::Values(
+        ClusterCase{"Whitted", kSmall, nlohmann::json::object()},
+        ClusterCase{"WhittedPng", kSmall, nlohmann::json::object(), "out.png"},
+        ClusterCase{"Path", concat(kSmall, {"--integrator", "path"}), nlohmann::json::object()},
+        ClusterCase{"PathAdaptive",
+                    {"--width", "96", "--height", "72", "--spp", "32", "--integrator", "path"},
+                    {{"adaptive", {{"min_spp", 4}, {"threshold", 0.05}}}}},
+        ClusterCase{"Radiosity", concat(kSmall, {"--integrator", "radiosity"}),
+                    nlohmann::json::object()},
+        ClusterCase{
+            "CropSeedAndAuxiliaryOutputs",
+            concat(kSmall, {"--crop", "10,5,70,60", "--seed", "9", "--aov", "albedo,normal,depth"}),
+            nlohmann::json::object()}),
+    CaseName());
+
+TEST(CliClusterOutputs, TheAuxiliaryOutputsAreTheOnesOfOneProcess) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const std::vector<std::string> arguments =
+        concat({"scene.json", "-o", "out.pfm", "--quiet", "--aov", "albedo,depth"}, kSmall);
+    ASSERT_EQ(runLancer(arguments, folder.path()).exitStatus, 0);
+    const std::string albedo = readFile(folder / "out.albedo.exr");
+    const std::string depth = readFile(folder / "out.depth.exr");
+    const RunResult run = runUnderMpirun(3, arguments, folder.path());
+    ASSERT_EQ(run.exitStatus, 0) << run;
+    EXPECT_TRUE(readFile(folder / "out.albedo.exr") == albedo);
+    EXPECT_TRUE(readFile(folder / "out.depth.exr") == depth);
+}
+
+TEST(CliClusterErrors, ASceneErrorIsReportedOnceWithStatus2) {
+    const TempFolder folder;
+    folder.write("scene.json", R"({"camera": {"fov": 40}, "bogus": 1})");
+    const RunResult run = runUnderMpirun(3, {"scene.json", "-o", "out.png"}, folder.path());
+    EXPECT_EQ(run.exitStatus, 2) << run;
+    int reports = 0;
+    for (const std::string& line : run.errorLines())
+        reports += line.find("error: unknown key \"bogus\"") != std::string::npos ? 1 : 0;
+    EXPECT_EQ(reports, 1) << run;
+    EXPECT_FALSE(fs::exists(folder / "out.png"));
+}
+
+TEST(CliClusterErrors, WindowIsRefusedUnderMpirun) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const RunResult run = runUnderMpirun(
+        2, concat({"scene.json", "-o", "out.png", "--window"}, kSmall), folder.path());
+    EXPECT_EQ(run.exitStatus, 2) << run;
+    int reports = 0;
+    for (const std::string& line : run.errorLines())
+        reports += line.find("--window") != std::string::npos ? 1 : 0;
+    EXPECT_EQ(reports, 1) << run;
+}
+
+// A render that takes a few seconds on three processes of one thread.
+const std::vector<std::string> kLongRender = {"scene.json", "-o",        "out.pfm", "--width",
+                                              "320",        "--height",  "240",     "--spp",
+                                              "64",         "--threads", "1",       "--quiet"};
+
+TEST(CliClusterInterrupt, CtrlCSavesTheFinishedTilesAndResumeFinishesThemBitForBit) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const RunResult whole = runLancer(kLongRender, folder.path());
+    ASSERT_EQ(whole.exitStatus, 0) << whole;
+    fs::rename(folder / "out.pfm", folder / "whole.pfm");
+    {
+        // mpirun turns the Ctrl-C into SIGTERM for every process, and reports its own status.
+        LancerProcess run(mpirun(3, kLongRender), folder.path(), 0, LANCER_MPIRUN);
+        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
+        run.sendSignal(SIGINT);
+        const RunResult stopped = run.wait();
+        ASSERT_FALSE(stopped.timedOut) << stopped;
+        ASSERT_NE(stopped.standardError.find("lancer: interrupted; the part rendered so far"),
+                  std::string::npos)
+            << stopped << " (the render ended before the signal?)";
+    }
+    ASSERT_TRUE(fs::exists(folder / "out.pfm.resume"));
+    const Image partial = loadImage(folder / "out.pfm");
+    EXPECT_EQ(partial.width, 320);
+    const RunResult resumed = runUnderMpirun(3, concat(kLongRender, {"--resume"}), folder.path());
+    ASSERT_EQ(resumed.exitStatus, 0) << resumed;
+    EXPECT_TRUE(readFile(folder / "out.pfm") == readFile(folder / "whole.pfm"));
+    EXPECT_FALSE(fs::exists(folder / "out.pfm.resume"));
+}
+
+// The lancer processes mpirun started (its children), newest last.
+std::vector<int> childrenOf(int parent) {
+    std::vector<int> children;
+    for (const fs::directory_entry& entry : fs::directory_iterator("/proc")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::ifstream stat(entry.path() / "stat");
+        std::string pid, command, state;
+        int parentPid = 0;
+        if (stat >> pid >> command >> state >> parentPid && parentPid == parent &&
+            command == "(lancer)")
+            children.push_back(std::stoi(pid));
+    }
+    std::sort(children.begin(), children.end());
+    return children;
+}
+
+TEST(CliClusterInterrupt, AKilledProcessStopsTheRunWithinSeconds) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    LancerProcess run(mpirun(3, kLongRender), folder.path(), 0, LANCER_MPIRUN);
+    std::vector<int> processes;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while ((processes = childrenOf(run.pid())).size() < 3 &&
+           std::chrono::steady_clock::now() < deadline)
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    ASSERT_EQ(processes.size(), 3u) << "mpirun did not start three lancer processes";
+    std::this_thread::sleep_for(std::chrono::milliseconds(1000));
+    kill(processes.back(), SIGKILL);
+    const auto killed = std::chrono::steady_clock::now();
+    const RunResult stopped = run.wait(std::chrono::seconds(30));
+    ASSERT_FALSE(stopped.timedOut) << stopped;
+    EXPECT_LT(std::chrono::steady_clock::now() - killed, std::chrono::seconds(10));
+    EXPECT_NE(stopped.exitStatus, 0) << stopped;
+    // mpirun names the process that died.
+    EXPECT_NE(stopped.standardError.find("signal 9"), std::string::npos) << stopped;
+    // No damaged output: none, or a whole image.
+    if (fs::exists(folder / "out.pfm")) {
+        EXPECT_EQ(loadImage(folder / "out.pfm").width, 320);
+    }
+}
+
+}  // namespace
+}  // namespace lancer::test
