@@ -77,6 +77,14 @@ private:
     std::chrono::microseconds pause_ = kFirstPause;
 };
 
+// Waits for `request` to complete, pausing between tests: a process that is done early (a worker
+// waiting for the leader to write the image) leaves the core to the others.
+void waitFor(MPI_Request& request) {
+    Pause pause;
+    for (int done = 0; MPI_Test(&request, &done, MPI_STATUS_IGNORE), !done;)
+        pause.wait();
+}
+
 // The pixels of a tile, as sent: the image's, then each auxiliary output's, row by row.
 std::vector<float> tilePixels(const FinishedTile& done) {
     std::vector<float> floats;
@@ -314,7 +322,9 @@ int Cluster::settle(int status) {
     if (settled_) return *settled_ != 0 ? *settled_ : status;
     if (size_ == 1) return *(settled_ = status);
     std::vector<int> statuses(static_cast<std::size_t>(size_));
-    MPI_Allgather(&status, 1, MPI_INT, statuses.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    MPI_Request gathered;
+    MPI_Iallgather(&status, 1, MPI_INT, statuses.data(), 1, MPI_INT, MPI_COMM_WORLD, &gathered);
+    waitFor(gathered);
     const auto failed = std::find_if(statuses.begin(), statuses.end(), [](int s) { return s; });
     const int agreed = failed == statuses.end() ? 0 : *failed;
     // The first failed worker's message, when the leader did not fail: the leader prints it.
@@ -406,7 +416,11 @@ RenderResult Cluster::render(const Renderer& renderer, RenderOptions options, in
 }
 
 int Cluster::finish(int status) {
-    if (size_ > 1) MPI_Bcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD);
+    if (size_ > 1) {
+        MPI_Request given;
+        MPI_Ibcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD, &given);
+        waitFor(given);
+    }
     return status;
 }
 
