@@ -58,7 +58,8 @@ struct Options {
     int threads = 0;
     std::uint64_t seed = 0;
     std::optional<std::string> crop;
-    std::optional<std::string> aovs;  // --aov's list
+    std::optional<std::string> frames;  // --frames' range
+    std::optional<std::string> aovs;    // --aov's list
     bool window = false;
     bool quiet = false;
     bool stats = false;
@@ -94,6 +95,39 @@ std::optional<PixelWindow> parseCrop(const std::string& text, int width, int hei
         return std::nullopt;
     }
     return w;
+}
+
+// The frames --frames asks for, "A:B" or "A", from 1 to `frames`.
+struct FrameRange {
+    int first, last;
+};
+std::optional<FrameRange> parseFrames(const std::string& text, int frames, std::string& error) {
+    FrameRange range{};
+    char colon = 0;
+    std::istringstream in(text);
+    bool read = static_cast<bool>(in >> range.first);
+    if (read && !(in >> std::ws).eof())
+        read = (in >> colon >> range.last) && colon == ':';
+    else
+        range.last = range.first;
+    if (!read || !(in >> std::ws).eof()) {
+        error = "--frames \"" + text + "\": expected A:B or A (frame numbers, from 1)";
+        return std::nullopt;
+    }
+    if (range.first < 1 || range.first > range.last || range.last > frames) {
+        error = "--frames " + text +
+                ": the frames must satisfy 1 <= A <= B <= " + std::to_string(frames) +
+                " (the animation's frames)";
+        return std::nullopt;
+    }
+    return range;
+}
+
+// The output of an animation's frame: OUT-0001.EXT for frame 1 of OUT.EXT.
+fs::path numberedOutput(const fs::path& output, int frame) {
+    char number[16];
+    std::snprintf(number, sizeof number, "-%04d", frame);
+    return output.parent_path() / (output.stem().string() + number + output.extension().string());
 }
 
 // For an argument CLI11 did not expect: the first unknown option, with the valid ones and a
@@ -285,7 +319,7 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
 // was read from and the options that change the image (not --threads, --quiet or the output's
 // format: the film is saved before exposure and tone mapping).
 std::uint64_t renderFingerprint(const Scene& scene, const RenderOptions& renderOptions,
-                                const PixelWindow& window, const Options& options) {
+                                const PixelWindow& window, const Options& options, int frame) {
     Fingerprint f;
     f.addText(BuildInfo::describe());
 #ifdef __linux__
@@ -299,7 +333,8 @@ std::uint64_t renderFingerprint(const Scene& scene, const RenderOptions& renderO
         .addNumber(static_cast<std::uint64_t>(settings.samplesPerPixel))
         .addNumber(static_cast<std::uint64_t>(settings.maxDepth))
         .addText(settings.integrator)
-        .addNumber(renderOptions.seed);
+        .addNumber(renderOptions.seed)
+        .addNumber(static_cast<std::uint64_t>(frame));
     for (const int side : {window.x0, window.y0, window.x1, window.y1})
         f.addNumber(static_cast<std::uint64_t>(side));
     for (const Aov* aov : renderOptions.aovs)
@@ -308,69 +343,10 @@ std::uint64_t renderFingerprint(const Scene& scene, const RenderOptions& renderO
     return f.value();
 }
 
-int run(Options options, Cluster& cluster) {
-    // In a cluster render the leader alone reports, reads the resume file and writes.
-    if (!cluster.leader()) {
-        options.quiet = true;
-        options.stats = false;
-        options.resume = false;
-        options.saveRadiosity.reset();
-    }
-    if (cluster.size() > 1 && options.window)
-        return usageError("--window shows one process's render: it cannot be used under mpirun (" +
-                          std::to_string(cluster.size()) + " processes)");
-    // Before anything is read: a signal while the scene loads ends the program cleanly.
-    InterruptSignals::install();
-    // Beyond the file-size limit (ulimit -f) a write fails with EFBIG, reported as a failed
-    // write; the default action would kill lancer and leave its temporary file.
-    std::signal(SIGXFSZ, SIG_IGN);
-    // The mesh builds, the radiosity solve and the render all run on oneTBB's threads: no more
-    // of them at once than --threads allows (and as many, when it asks for more than the cores).
-    std::optional<tbb::global_control> threadLimit;
-    if (options.threads > 0)
-        threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
-                            static_cast<std::size_t>(options.threads));
-    // Whitted ray tracing recurses once per bounce: as much stack on the workers as the main
-    // thread has (oneTBB's default is half of it).
-    const tbb::global_control stackSize(tbb::global_control::thread_stack_size, 8u << 20);
-    const fs::path output = options.output.empty()
-                                ? fs::path(options.scene).replace_extension(".png")
-                                : fs::path(options.output);
-    if (!ImageWriter::supports(output)) {
-        // supportedExtensions() is ".png, .jpg, ...": its names, for the suggestion.
-        std::vector<std::string> extensions;
-        std::istringstream list(ImageWriter::supportedExtensions());
-        for (std::string extension; std::getline(list >> std::ws, extension, ',');)
-            extensions.push_back(extension);
-        const std::string extension = output.extension().string();
-        return usageError("unknown output format \"" + extension + "\" for " + output.string() +
-                          didYouMean(extension, extensions) + " (expected one of " +
-                          ImageWriter::supportedExtensions() + ")");
-    }
-    const fs::path outputFolder =
-        output.parent_path().empty() ? fs::path(".") : output.parent_path();
-    if (cluster.leader() && !fs::is_directory(outputFolder))
-        return fail(kExitFailure, "lancer: error: " + output.string() +
-                                      ": cannot write the image (folder " + outputFolder.string() +
-                                      " does not exist)");
-    if (cluster.leader() && fs::is_directory(output))
-        return fail(kExitFailure, "lancer: error: " + output.string() +
-                                      ": cannot write the image (it is a folder)");
-    std::vector<const Aov*> aovs;
-    if (options.aovs) {
-        try {
-            aovs = Aov::parseList(*options.aovs);
-        } catch (const std::invalid_argument& e) {
-            return usageError(std::string("--aov ") + e.what());
-        }
-    }
-
-    std::vector<std::string> warnings;
-    Scene scene = SceneLoader::loadFile(options.scene, warnings);
-    if (!options.quiet)
-        for (const std::string& warning : warnings)
-            std::cerr << warning << '\n';
-
+// Renders `scene` (`frame` of an animation, or 0 for a still) to `output` and writes it; returns
+// the exit status.
+int renderImage(const Options& options, Cluster& cluster, Scene scene, const fs::path& output,
+                const std::vector<const Aov*>& aovs, int frame) {
     RenderSettings& settings = scene.settings();
     if (options.width) settings.width = *options.width;
     if (options.height) settings.height = *options.height;
@@ -411,7 +387,8 @@ int run(Options options, Cluster& cluster) {
     // An interrupted render leaves its finished tiles in OUT.resume, which --resume finishes.
     const PixelWindow window =
         renderOptions.crop.value_or(PixelWindow{0, 0, settings.width, settings.height});
-    const std::uint64_t fingerprint = renderFingerprint(scene, renderOptions, window, options);
+    const std::uint64_t fingerprint =
+        renderFingerprint(scene, renderOptions, window, options, frame);
     const fs::path resumePath = ResumeFile::pathBeside(output);
     std::optional<RenderResult> resumed;
     if (options.resume) {
@@ -419,7 +396,7 @@ int run(Options options, Cluster& cluster) {
             resumed = ResumeFile::read(resumePath, fingerprint, settings.width, settings.height,
                                        window, aovs.size());
             renderOptions.resumeFrom = &*resumed;
-        } else if (!options.quiet) {
+        } else if (!options.quiet && frame == 0) {
             std::cerr << "lancer: --resume: there is no " << resumePath.string()
                       << ", so the whole image is rendered\n";
         }
@@ -512,6 +489,123 @@ int run(Options options, Cluster& cluster) {
     return deliver(result, true);
 }
 
+int run(Options options, Cluster& cluster) {
+    // In a cluster render the leader alone reports, reads the resume file and writes.
+    if (!cluster.leader()) {
+        options.quiet = true;
+        options.stats = false;
+        options.resume = false;
+        options.saveRadiosity.reset();
+    }
+    if (cluster.size() > 1 && options.window)
+        return usageError("--window shows one process's render: it cannot be used under mpirun (" +
+                          std::to_string(cluster.size()) + " processes)");
+    // Before anything is read: a signal while the scene loads ends the program cleanly.
+    InterruptSignals::install();
+    // Beyond the file-size limit (ulimit -f) a write fails with EFBIG, reported as a failed
+    // write; the default action would kill lancer and leave its temporary file.
+    std::signal(SIGXFSZ, SIG_IGN);
+    // The mesh builds, the radiosity solve and the render all run on oneTBB's threads: no more
+    // of them at once than --threads allows (and as many, when it asks for more than the cores).
+    std::optional<tbb::global_control> threadLimit;
+    if (options.threads > 0)
+        threadLimit.emplace(tbb::global_control::max_allowed_parallelism,
+                            static_cast<std::size_t>(options.threads));
+    // Whitted ray tracing recurses once per bounce: as much stack on the workers as the main
+    // thread has (oneTBB's default is half of it).
+    const tbb::global_control stackSize(tbb::global_control::thread_stack_size, 8u << 20);
+    const fs::path output = options.output.empty()
+                                ? fs::path(options.scene).replace_extension(".png")
+                                : fs::path(options.output);
+    if (!ImageWriter::supports(output)) {
+        // supportedExtensions() is ".png, .jpg, ...": its names, for the suggestion.
+        std::vector<std::string> extensions;
+        std::istringstream list(ImageWriter::supportedExtensions());
+        for (std::string extension; std::getline(list >> std::ws, extension, ',');)
+            extensions.push_back(extension);
+        const std::string extension = output.extension().string();
+        return usageError("unknown output format \"" + extension + "\" for " + output.string() +
+                          didYouMean(extension, extensions) + " (expected one of " +
+                          ImageWriter::supportedExtensions() + ")");
+    }
+    const fs::path outputFolder =
+        output.parent_path().empty() ? fs::path(".") : output.parent_path();
+    if (cluster.leader() && !fs::is_directory(outputFolder))
+        return fail(kExitFailure, "lancer: error: " + output.string() +
+                                      ": cannot write the image (folder " + outputFolder.string() +
+                                      " does not exist)");
+    if (cluster.leader() && fs::is_directory(output))
+        return fail(kExitFailure, "lancer: error: " + output.string() +
+                                      ": cannot write the image (it is a folder)");
+    std::vector<const Aov*> aovs;
+    if (options.aovs) {
+        try {
+            aovs = Aov::parseList(*options.aovs);
+        } catch (const std::invalid_argument& e) {
+            return usageError(std::string("--aov ") + e.what());
+        }
+    }
+
+    std::vector<std::string> warnings;
+    Scene scene = SceneLoader::loadFile(options.scene, warnings);
+    if (!options.quiet)
+        for (const std::string& warning : warnings)
+            std::cerr << warning << '\n';
+    const std::optional<AnimationSettings>& animation = scene.settings().animation;
+    if (!animation) {
+        if (options.frames)
+            return usageError("--frames " + *options.frames + ": " + options.scene +
+                              " is not animated (it has no \"animation\" block)");
+        return renderImage(options, cluster, std::move(scene), output, aovs, 0);
+    }
+
+    // An animation: each frame of the range is loaded and rendered in turn, to OUT-0001.EXT...
+    FrameRange range{1, animation->frames};
+    if (options.frames) {
+        std::string error;
+        const std::optional<FrameRange> asked =
+            parseFrames(*options.frames, animation->frames, error);
+        if (!asked) return usageError(error);
+        range = *asked;
+    }
+    if (options.window && range.last > range.first)
+        return usageError("--window shows one image, and the animation of " + options.scene +
+                          " has " + std::to_string(range.last - range.first + 1) +
+                          " frames to render: choose one with --frames N");
+    if ((options.saveRadiosity || options.loadRadiosity) && range.last > range.first)
+        return usageError(
+            "--save-radiosity and --load-radiosity keep the solution of one frame: "
+            "choose it with --frames N");
+    for (int frame = range.first; frame <= range.last; ++frame) {
+        // A signal between two frames stops before the next (as the leader saw it: every process
+        // goes on or stops alike).
+        if (cluster.fromLeader(InterruptSignals::requested() ? 1 : 0) != 0) {
+            std::cerr << "lancer: interrupted before frame " << frame << "; the frames before it "
+                      << "were written\n";
+            return InterruptSignals::exitStatus();
+        }
+        const fs::path frameOutput = numberedOutput(output, frame);
+        // --resume keeps the frames an earlier run finished: their image, and no resume file.
+        const bool finished = options.resume && fs::exists(frameOutput) &&
+                              !fs::exists(ResumeFile::pathBeside(frameOutput));
+        if (cluster.fromLeader(finished ? 1 : 0) != 0) {
+            if (!options.quiet)
+                std::cerr << "lancer: --resume: " << frameOutput.string()
+                          << " was finished by an earlier run\n";
+            continue;
+        }
+        if (frame != 1) {
+            std::vector<std::string> again;  // the same warnings as the first frame's
+            scene = SceneLoader::loadFile(options.scene, again, frame);
+        }
+        if (const int status =
+                renderImage(options, cluster, std::move(scene), frameOutput, aovs, frame);
+            status != 0)
+            return status;
+    }
+    return 0;
+}
+
 // Runs `run` with the exceptions it may throw turned into their exit status and message.
 int runReporting(const Options& options, Cluster& cluster) {
     try {
@@ -595,6 +689,9 @@ int main(int argc, char** argv) {
             ""));
     app.add_option("--crop", options.crop,
                    "Render only the pixels X0,Y0,X1,Y1 (inclusive-exclusive)");
+    app.add_option("--frames", options.frames,
+                   "Render only the frames A to B (\"A:B\", or \"A\" alone) of the scene's "
+                   "animation, numbered from 1, each to OUT-0001.EXT...");
     app.add_option("--aov", options.aovs,
                    "Also write auxiliary outputs beside the image, OUT.NAME.exr, for a denoiser: "
                    "any of " +

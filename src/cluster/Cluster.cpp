@@ -415,13 +415,17 @@ RenderResult Cluster::render(const Renderer& renderer, RenderOptions options, in
     return result;
 }
 
-int Cluster::finish(int status) {
+int Cluster::fromLeader(int value) {
     if (size_ > 1) {
         MPI_Request given;
-        MPI_Ibcast(&status, 1, MPI_INT, 0, MPI_COMM_WORLD, &given);
+        MPI_Ibcast(&value, 1, MPI_INT, 0, MPI_COMM_WORLD, &given);
         waitFor(given);
     }
-    return status;
+    return value;
+}
+
+int Cluster::finish(int status) {
+    return fromLeader(status);
 }
 
 #else  // a build without MPI: always a cluster of one
@@ -446,6 +450,10 @@ int Cluster::settle(int status) {
 RenderResult Cluster::render(const Renderer& renderer, RenderOptions options, int, int,
                              const std::function<void(int, int)>& onProgress) {
     return renderAlone(renderer, std::move(options), onProgress);
+}
+
+int Cluster::fromLeader(int value) {
+    return value;
 }
 
 int Cluster::finish(int status) {

@@ -47,6 +47,10 @@ public:
     RenderResult render(const Renderer& renderer, RenderOptions options, int width, int height,
                         const std::function<void(int, int)>& onProgress);
 
+    // The leader's `value`, in every process: what the leader alone could decide (a frame that
+    // --resume skips). Called by every process alike.
+    int fromLeader(int value);
+
     // The leader's exit status, given to every process (mpirun reports the lowest rank's).
     int finish(int status);
 

@@ -27,6 +27,7 @@
 #include "io/ImageReader.h"
 #include "io/InputFile.h"
 #include "io/JsonDocument.h"
+#include "io/Keyframes.h"
 #include "io/ObjLoader.h"
 #include "io/PlyLoader.h"
 #include "lights/AreaLight.h"
@@ -93,6 +94,9 @@ class SceneLoader::Reader {
         std::string pointer;
         std::string name;
         const JsonDocument* document;
+        // Where members of an object put together by the loader (the camera of an animation's
+        // frame) were written, by key, when not at `pointer`'s own members.
+        const std::map<std::string, std::string>* memberPointers = nullptr;
 
         Node operator[](const std::string& key) const;  // an object's member
         Node at(std::size_t index) const;               // an array's element
@@ -100,7 +104,8 @@ class SceneLoader::Reader {
     };
 
 public:
-    Reader(const JsonDocument& doc, std::vector<std::string>& warnings);
+    // `frame`: the frame of the scene's animation to load, from 1 (any frame, without one).
+    Reader(const JsonDocument& doc, std::vector<std::string>& warnings, int frame);
     Scene load();
 
 private:
@@ -117,7 +122,12 @@ private:
     void loadFilter(const Node& node);
     void loadAdaptive(const Node& render, const Node& node);
     void loadRadiosity(const Node& node);
+    // The "animation" block: its settings and keyframes (each keyframed transform is checked).
+    void loadAnimation(const Node& node);
+    // The camera at the frame loaded: `node` with its keyframed keys at that frame.
     void loadCamera(const Node& node);
+    // The camera for `entry`'s keys.
+    void loadCameraOfType(const Node& node);
     void loadMaterials(const Node& node);
     void loadGroups(const Node& node);
     // Names defined twice (in one file or two) are an error naming both places.
@@ -225,6 +235,11 @@ private:
                                                         ImageReader::Content content);
     std::shared_ptr<const Texture> loadCheckerTexture(const Node& checker, ImageReader::Content);
     Transform readTransform(const Node& node) const;
+    // An object's transform, if it has one: its own, or its keyframes' at the frame loaded when
+    // its "name" is animated.
+    std::optional<Transform> readPlacement(const Node& node);
+    // Every object the animation names must exist.
+    void checkAnimatedNames() const;
     void loadLight(const Node& node);
     // A light that reads its own keys: LightType::keys() and LightType::create(parameters).
     template <typename LightType>
@@ -315,6 +330,16 @@ private:
     // Each model and texture file is loaded once, however many objects use it.
     std::map<std::string, std::shared_ptr<const Mesh>> meshes_;
     std::map<std::string, std::shared_ptr<const Texture>> textures_;
+    // The animation: the frame loaded, the keyframes of the camera's keys and of the named
+    // objects' transforms, and where each object name was given (file:line:column).
+    int frame_;
+    Keyframes::Interpolation interpolation_ = Keyframes::Interpolation::Linear;
+    std::map<std::string, Keyframes> cameraKeyframes_;
+    std::map<std::string, Keyframes> objectKeyframes_;
+    std::map<std::string, std::string> objectNames_;
+    // The camera of the frame loaded, and where its keyframed keys were written.
+    json animatedCamera_;
+    std::map<std::string, std::string> animatedCameraPointers_;
 };
 
 class SceneLoader::Reader::ObjectParameters final : public MaterialParameters {
@@ -433,6 +458,9 @@ const Registry<SceneLoader::Reader::CameraType>& SceneLoader::Reader::cameraType
 }
 
 SceneLoader::Reader::Node SceneLoader::Reader::Node::operator[](const std::string& key) const {
+    if (memberPointers)
+        if (const auto written = memberPointers->find(key); written != memberPointers->end())
+            return {value.at(key), written->second, inQuotes(key), document};
     return {value.at(key), JsonDocument::child(pointer, key), inQuotes(key), document};
 }
 
@@ -470,25 +498,26 @@ std::string identityOf(const std::filesystem::path& path) {
 
 // The top-level keys of an included file, and those only the scene file may give.
 const std::vector<std::string> kFragmentKeys{"include", "materials", "groups", "objects", "lights"};
-const std::vector<std::string> kSceneFileKeys{"render",      "camera",  "background",
-                                              "environment", "ambient", "radiosity"};
+const std::vector<std::string> kSceneFileKeys{"render",  "camera",    "background", "environment",
+                                              "ambient", "radiosity", "animation"};
 
 }  // namespace
 
-Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings) {
-    Scene scene = loadString(readSceneText(path), path.string(), warnings);
+Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings,
+                            int frame) {
+    Scene scene = loadString(readSceneText(path), path.string(), warnings, frame);
     scene.addSourceFile(path);
     return scene;
 }
 
 Scene SceneLoader::loadString(const std::string& text, const std::string& fileName,
-                              std::vector<std::string>& warnings) {
+                              std::vector<std::string>& warnings, int frame) {
     const JsonDocument doc = JsonDocument::parse(text, fileName);
-    return Reader(doc, warnings).load();
+    return Reader(doc, warnings, frame).load();
 }
 
-SceneLoader::Reader::Reader(const JsonDocument& doc, std::vector<std::string>& warnings)
-    : doc_(doc), warnings_(warnings) {}
+SceneLoader::Reader::Reader(const JsonDocument& doc, std::vector<std::string>& warnings, int frame)
+    : doc_(doc), warnings_(warnings), frame_(frame) {}
 
 Scene SceneLoader::Reader::load() {
     const auto start = std::chrono::steady_clock::now();
@@ -499,6 +528,7 @@ Scene SceneLoader::Reader::load() {
     defaultMaterial_ = scene_.addMaterial(std::make_unique<BlinnPhongMaterial>());
     if (root.has("render")) loadRender(root["render"]);
     if (root.has("radiosity")) loadRadiosity(root["radiosity"]);
+    if (root.has("animation")) loadAnimation(root["animation"]);
     if (!root.has("camera")) fail(root, "the scene has no \"camera\"");
     loadCamera(root["camera"]);
     if (root.has("background")) scene_.setBackground(readColor(root["background"]));
@@ -521,6 +551,7 @@ Scene SceneLoader::Reader::load() {
         if (!group.shapes) readGroup(name, group);
     for (const Node& fragment : fragments)
         loadContents(fragment);
+    checkAnimatedNames();
     warnOfLightsFacingAway();
     scene_.buildAccelerationStructure();
     scene_.statistics().loadSeconds =
@@ -702,6 +733,18 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
 
 void SceneLoader::Reader::loadCamera(const Node& node) {
     requireObject(node, "\"camera\"");
+    if (cameraKeyframes_.empty()) return loadCameraOfType(node);
+    animatedCamera_ = node.value;
+    for (const auto& [key, keyframes] : cameraKeyframes_) {
+        Keyframes::Value value = keyframes.at(frame_, interpolation_);
+        animatedCamera_[key] = std::move(value.value);
+        animatedCameraPointers_[key] = JsonDocument::child(value.pointer, key);
+    }
+    loadCameraOfType(
+        {animatedCamera_, node.pointer, node.name, node.document, &animatedCameraPointers_});
+}
+
+void SceneLoader::Reader::loadCameraOfType(const Node& node) {
     const CameraType& entry = node.has("type") ? lookUp(cameraTypes(), node["type"], "camera type")
                                                : *cameraTypes().find("perspective");
     checkKeys(node, "\"camera\"", withKeys({"type", "position", "look_at", "up"}, entry.keys()));
@@ -853,15 +896,13 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::readObject(const Node& node) {
     requireObject(node, "an object");
     const ObjectType& entry =
         lookUp(objectTypes(), require(node, "type", "an object"), "object type");
-    std::optional<Transform> transform;
-    if (node.has("transform")) transform = readTransform(node["transform"]);
-    return (this->*entry.load)(node, entry.what, transform);
+    return (this->*entry.load)(node, entry.what, readPlacement(node));
 }
 
 template <typename ShapeType>
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadShape(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
-    checkKeys(node, what, withKeys({"type", "material", "transform"}, ShapeType::keys()));
+    checkKeys(node, what, withKeys({"type", "material", "transform", "name"}, ShapeType::keys()));
     return only(placed(ShapeType::create(ObjectParameters(*this, node, what), materialOf(node)),
                        transform));
 }
@@ -874,7 +915,7 @@ void SceneLoader::Reader::loadLight(const Node& node, const char* what) {
 
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadTriangle(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
-    checkKeys(node, what, {"type", "vertices", "normals", "uvs", "material", "transform"});
+    checkKeys(node, what, {"type", "vertices", "normals", "uvs", "material", "transform", "name"});
     const auto readThree = [&](const std::string& key, auto read) {
         const Node list = require(node, key, what);
         if (!list.value.is_array() || list.value.size() != 3)
@@ -930,7 +971,7 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadGltfObject(
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadModelObject(
     const Node& node, const char* what, const std::optional<Transform>& transform,
     const std::string& model, const ModelReader& read) {
-    checkKeys(node, what, {"type", "file", "material", "transform", "smooth"});
+    checkKeys(node, what, {"type", "file", "material", "transform", "name", "smooth"});
     std::optional<float> smooth;
     if (node.has("smooth")) {
         smooth = readNumberAtLeast(node["smooth"], 0, true);
@@ -947,7 +988,7 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadModelObject(
 
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadCsg(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
-    checkKeys(node, what, {"type", "operation", "objects", "material", "transform"});
+    checkKeys(node, what, {"type", "operation", "objects", "material", "transform", "name"});
     const auto operation = static_cast<Csg::Operation>(
         ObjectParameters(*this, node, what).choice("operation", Csg::operationNames()));
     const Node objects = require(node, "objects", what);
@@ -976,7 +1017,7 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadCsg(
 
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadGroupObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
-    checkKeys(node, what, {"type", "group", "transform"});
+    checkKeys(node, what, {"type", "group", "transform", "name"});
     const Group& group = groupNamed(require(node, "group", what));
     scene_.statistics().instancedTriangles += group.instancedTriangles;
     Shapes shapes;
@@ -1119,6 +1160,113 @@ Transform SceneLoader::Reader::readTransform(const Node& node) const {
     }
     if (node.has("translate")) result = Transform::translate(readVec3(node["translate"])) * result;
     return result;
+}
+
+void SceneLoader::Reader::loadAnimation(const Node& node) {
+    requireObject(node, "\"animation\"");
+    checkKeys(node, "\"animation\"", {"frames", "fps", "interpolation", "camera", "objects"});
+    AnimationSettings& animation = scene_.settings().animation.emplace();
+    animation.frames =
+        readInt(require(node, "frames", "\"animation\""), 1, AnimationSettings::kMaxFrames);
+    if (node.has("fps")) {
+        animation.framesPerSecond = readNumberAtLeast(node["fps"], 0, false);
+        if (animation.framesPerSecond > AnimationSettings::kMaxFramesPerSecond)
+            fail(node["fps"], "\"fps\" must be at most " +
+                                  std::to_string(AnimationSettings::kMaxFramesPerSecond));
+    }
+    if (node.has("interpolation"))
+        interpolation_ = static_cast<Keyframes::Interpolation>(
+            ObjectParameters(*this, node, "\"animation\"")
+                .choice("interpolation", {"linear", "smooth"}));
+    // Each keyframe's frame, checked against the animation's frames.
+    const auto frameOf = [&](const Node& keyframe, const std::string& what) {
+        requireObject(keyframe, what);
+        return readInt(require(keyframe, "frame", what), 1, animation.frames);
+    };
+    const auto add = [&](Keyframes& keyframes, int frame, const Node& value,
+                         const std::string& pointer) {
+        try {
+            keyframes.add(frame, value.value, pointer);
+        } catch (const std::invalid_argument& e) {
+            fail(value, value.name + ": " + e.what());
+        }
+    };
+    if (node.has("camera")) {
+        const Node camera = node["camera"];
+        requireArray(camera, "the animation's \"camera\"");
+        for (std::size_t i = 0; i < camera.value.size(); ++i) {
+            const Node keyframe = camera.at(i);
+            const int frame = frameOf(keyframe, "a camera keyframe");
+            if (keyframe.value.size() < 2)
+                fail(keyframe,
+                     "a camera keyframe gives the frame and at least one of the "
+                     "camera's keys (\"position\", \"look_at\", \"vfov\"...)");
+            for (const auto& [key, value] : keyframe.value.items()) {
+                if (key == "frame") continue;
+                if (key == "type")
+                    failAtKey(keyframe[key],
+                              "the camera's \"type\" cannot change from frame "
+                              "to frame");
+                add(cameraKeyframes_[key], frame, keyframe[key], keyframe.pointer);
+            }
+        }
+    }
+    if (node.has("objects")) {
+        const Node objects = node["objects"];
+        requireObject(objects, "the animation's \"objects\"");
+        for (const auto& [name, ignored] : objects.value.items()) {
+            const Node keyframes = objects[name];
+            requireArray(keyframes, "the keyframes of " + inQuotes(name));
+            if (keyframes.value.empty()) fail(keyframes, inQuotes(name) + " has no keyframe");
+            for (std::size_t i = 0; i < keyframes.value.size(); ++i) {
+                const Node keyframe = keyframes.at(i);
+                const std::string what = "a keyframe of " + inQuotes(name);
+                const int frame = frameOf(keyframe, what);
+                checkKeys(keyframe, what, {"frame", "transform"});
+                const Node transform = require(keyframe, "transform", what);
+                readTransform(transform);
+                add(objectKeyframes_[name], frame, transform, transform.pointer);
+            }
+        }
+    }
+}
+
+std::optional<Transform> SceneLoader::Reader::readPlacement(const Node& node) {
+    const std::optional<Node> name = node.has("name") ? std::optional(node["name"]) : std::nullopt;
+    if (name) {
+        const std::string text = readString(*name);
+        if (text.empty()) fail(*name, "an object's \"name\" must not be empty");
+        const auto [given, first] = objectNames_.emplace(text, placeOfKey(*name));
+        if (!first)
+            failAtKey(*name, "the name " + inQuotes(text) + " is already given to the object at " +
+                                 given->second);
+        if (const auto animated = objectKeyframes_.find(text); animated != objectKeyframes_.end()) {
+            if (node.has("transform"))
+                failAtKey(node["transform"],
+                          inQuotes(text) +
+                              " is animated: its transform is its keyframes' in \"animation\"; "
+                              "give it there instead");
+            const Keyframes::Value value = animated->second.at(frame_, interpolation_);
+            return readTransform({value.value, value.pointer, "\"transform\"", &doc_});
+        }
+    }
+    if (node.has("transform")) return readTransform(node["transform"]);
+    return std::nullopt;
+}
+
+void SceneLoader::Reader::checkAnimatedNames() const {
+    std::vector<std::string> names;
+    for (const auto& [name, place] : objectNames_)
+        names.push_back(name);
+    for (const auto& [name, keyframes] : objectKeyframes_) {
+        if (objectNames_.count(name)) continue;
+        const Node root{doc_.root(), "", "the scene", &doc_};
+        failAtKey(root["animation"]["objects"][name],
+                  "the animation moves " + inQuotes(name) + ", but no object has that \"name\"" +
+                      didYouMean(name, names) +
+                      (names.empty() ? "; no object has a \"name\""
+                                     : "; the objects named are " + quotedNames(names)));
+    }
 }
 
 void SceneLoader::Reader::loadLight(const Node& node) {

@@ -14,10 +14,13 @@ class SceneLoader {
 public:
     // Problems that do not stop the render (a degenerate triangle dropped...) are appended to
     // `warnings`, one line each, already prefixed with their place in the file.
-    static Scene loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings);
+    // `frame` is the frame of the scene's "animation" to load (from 1; frames beyond its last
+    // hold its last keyframes); a scene without one is the same at every frame.
+    static Scene loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings,
+                          int frame = 1);
     // The same for scene text in memory; `fileName` is used in messages.
     static Scene loadString(const std::string& text, const std::string& fileName,
-                            std::vector<std::string>& warnings);
+                            std::vector<std::string>& warnings, int frame = 1);
 
     // What the scene format can name, from the tables the loader reads: the object, light,
     // material, texture, filter and integrator types, each under the key that names them.

@@ -4,6 +4,7 @@
 #include <string>
 
 #include "scene/AdaptiveSettings.h"
+#include "scene/AnimationSettings.h"
 #include "scene/FilterSettings.h"
 #include "scene/RadiositySettings.h"
 
@@ -38,6 +39,8 @@ struct RenderSettings {
     float exposure = 0;             // stops: the outputs are scaled by 2^exposure
     std::string tonemap = "clamp";  // the 8-bit outputs' tone operator
     RadiositySettings radiosity;    // the top-level "radiosity" block
+    // The top-level "animation" block's frames: none for a still image.
+    std::optional<AnimationSettings> animation;
 };
 
 }  // namespace lancer

@@ -105,6 +105,35 @@ TEST(CliClusterOutputs, TheAuxiliaryOutputsAreTheOnesOfOneProcess) {
     EXPECT_TRUE(readFile(folder / "out.depth.exr") == depth);
 }
 
+// An animation's frames, each shared out tile by tile; radiosity solved again for each frame, by
+// every process alike. --resume under mpirun keeps the frames finished.
+TEST(CliClusterAnimation, TheFramesAreTheOnesOfOneProcess) {
+    nlohmann::json scene = animatedWhittedScene();
+    scene["radiosity"] = {{"max_shots", 40}};
+    const TempFolder folder;
+    folder.write("scene.json", scene.dump());
+    const std::vector<std::string> arguments =
+        concat({"scene.json", "-o", "out.pfm", "--quiet", "--integrator", "radiosity"}, kSmall);
+    ASSERT_EQ(runLancer(arguments, folder.path()).exitStatus, 0);
+    const std::vector<std::string> names = {"out-0001.pfm", "out-0002.pfm", "out-0003.pfm"};
+    std::vector<std::string> alone;
+    for (const std::string& name : names) {
+        alone.push_back(readFile(folder / name));
+        fs::remove(folder / name);
+    }
+    const RunResult run = runUnderMpirun(3, arguments, folder.path());
+    ASSERT_EQ(run.exitStatus, 0) << run;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        EXPECT_TRUE(readFile(folder / names[i]) == alone[i]) << names[i] << " differs";
+
+    folder.write("out-0001.pfm", "kept");
+    fs::remove(folder / "out-0003.pfm");
+    const RunResult resumed = runUnderMpirun(2, concat(arguments, {"--resume"}), folder.path());
+    ASSERT_EQ(resumed.exitStatus, 0) << resumed;
+    EXPECT_EQ(readFile(folder / "out-0001.pfm"), "kept");
+    EXPECT_TRUE(readFile(folder / "out-0003.pfm") == alone[2]);
+}
+
 TEST(CliClusterErrors, ASceneErrorIsReportedOnceWithStatus2) {
     const TempFolder folder;
     folder.write("scene.json", R"({"camera": {"fov": 40}, "bogus": 1})");

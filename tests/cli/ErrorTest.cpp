@@ -386,7 +386,7 @@ const ErrorCase kErrorCases[] = {
      .replace = R"("radius": 1)",
      .with = R"("radius": 1, @"colour": 1)",
      .mentions =
-         {R"(unknown key "colour" in a sphere; expected "type", "material", "transform", "center" or "radius")"}},
+         {R"(unknown key "colour" in a sphere; expected "type", "material", "transform", "name", "center" or "radius")"}},
     {.name = "UnknownTextureTypeListsTheValidOnes",
      .replace = R"({ "checker": {)",
      .with = R"({ @"chequer": {)",

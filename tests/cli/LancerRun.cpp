@@ -364,6 +364,20 @@ nlohmann::json loadWhittedScene() {
                                  nullptr, /*allow_exceptions=*/true, /*ignore_comments=*/true);
 }
 
+nlohmann::json animatedWhittedScene() {
+    nlohmann::json scene = loadWhittedScene();
+    scene["objects"][2]["name"] = "ball";
+    scene["animation"] = {
+        {"frames", 3},
+        {"camera",
+         {{{"frame", 1}, {"position", {0, 1.5, 7}}}, {{"frame", 3}, {"position", {0, 2.5, 7}}}}},
+        {"objects",
+         {{"ball",
+           {{{"frame", 1}, {"transform", {{"translate", {-1, 0, 0}}}}},
+            {{"frame", 3}, {"transform", {{"translate", {1, 0, 0}}}}}}}}}};
+    return scene;
+}
+
 nlohmann::json cameraAlongY(double x, double z, double height) {
     return {{"type", "orthographic"},
             {"position", {x, height, z}},

@@ -149,6 +149,9 @@ struct CaseName {
 
 // scenes/whitted.json of the source tree, parsed (comments allowed).
 nlohmann::json loadWhittedScene();
+// The same in 3 frames: the glass ball (named "ball") moves from x - 1 to x + 1 and the camera
+// rises from y = 1.5 to 2.5, linearly, so that frame 2 is exactly halfway.
+nlohmann::json animatedWhittedScene();
 
 // An orthographic camera 2 units high looking straight down (-y) at (x, 0, z) from y = height
 // (below the plane when negative: then looking up), -z at the top of the image, +x to the right

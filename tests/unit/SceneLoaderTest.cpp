@@ -393,7 +393,106 @@ INSTANTIATE_TEST_SUITE_P(
             "MissingRadius", "\"radius\": 1, ", "", "{ \"type\": \"sphere\"", {"\"radius\""}, true},
         ErrorCase{"MissingObjectType", "{ \"type\": \"plane\", ", "{ ", "{", {"\"type\""}},
         // A syntax error is reported by the JSON reader, at the token it did not expect.
-        ErrorCase{"MissingComma", "\"radius\": 1,", "\"radius\": 1", "\"material\"", {}}),
+        ErrorCase{"MissingComma", "\"radius\": 1,", "\"radius\": 1", "\"material\"", {}},
+        ErrorCase{"UnknownAnimationKey",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"fsp\": 12 }, \"objects\": [\n    { \"type\": "
+                  "\"sphere\", \"name\": \"ball\", \"center\": [0, 1, 0],",
+                  "\"fsp\"",
+                  {"\"fsp\"", "did you mean \"fps\""}},
+        ErrorCase{"AnimationWithoutFrames",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"fps\": 12 }, \"objects\": [\n    { \"type\": \"sphere\", "
+                  "\"name\": \"ball\", \"center\": [0, 1, 0],",
+                  "{ \"fps\"",
+                  {"\"frames\""}},
+        ErrorCase{"UnknownInterpolation",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"interpolation\": \"smoth\" }, \"objects\": "
+                  "[\n    { \"type\": \"sphere\", \"name\": \"ball\", \"center\": [0, 1, 0],",
+                  "\"smoth\"",
+                  {"did you mean \"smooth\""}},
+        ErrorCase{"KeyframeBeyondTheFrames",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"camera\": [{ \"frame\": 9, \"vfov\": 30 }] }, "
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"name\": \"ball\", \"center\": [0, "
+                  "1, 0],",
+                  "9",
+                  {"\"frame\"", "at most 4"}},
+        ErrorCase{"KeyframesOutOfOrder",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"camera\": [{ \"frame\": 3, \"vfov\": 30 }, { "
+                  "\"frame\": 2, \"vfov\": 50 }] }, \"objects\": [\n    { \"type\": \"sphere\", "
+                  "\"name\": \"ball\", \"center\": [0, 1, 0],",
+                  "50",
+                  {"order of their frames", "frame 2 follows frame 3"}},
+        ErrorCase{"KeyframeOfAnotherShape",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"camera\": [{ \"frame\": 1, \"position\": [0, "
+                  "1, 6] }, { \"frame\": 4, \"position\": [0, 1] }] }, \"objects\": [\n    { "
+                  "\"type\": \"sphere\", \"name\": \"ball\", \"center\": [0, 1, 0],",
+                  "[0, 1] }",
+                  {"\"position\"", "shape of its first keyframe"}},
+        ErrorCase{"UnknownKeyInACameraKeyframe",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"camera\": [{ \"frame\": 1, \"fov\": 30 }] }, "
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"name\": \"ball\", \"center\": [0, "
+                  "1, 0],",
+                  "\"fov\"",
+                  {"\"fov\"", "did you mean \"vfov\""}},
+        ErrorCase{"CameraTypeKeyframed",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"camera\": [{ \"frame\": 1, \"type\": "
+                  "\"fisheye\" }] }, \"objects\": [\n    { \"type\": \"sphere\", \"name\": "
+                  "\"ball\", \"center\": [0, 1, 0],",
+                  "\"type\"",
+                  {"\"type\" cannot change"}},
+        ErrorCase{"CameraKeyframeWithoutKeys",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"camera\": [{ \"frame\": 1 }] }, \"objects\": "
+                  "[\n    { \"type\": \"sphere\", \"name\": \"ball\", \"center\": [0, 1, 0],",
+                  "{ \"frame\": 1 }",
+                  {"at least one of the camera"}},
+        ErrorCase{"AnimatedCameraLookingAtItself",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"camera\": [{ \"frame\": 1, \"look_at\": [0, "
+                  "1, 6] }] }, \"objects\": [\n    { \"type\": \"sphere\", \"name\": \"ball\", "
+                  "\"center\": [0, 1, 0],",
+                  "[0, 1, 6] }",
+                  {"\"look_at\" is the camera's own"}},
+        ErrorCase{"BadKeyframedTransform",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"objects\": { \"ball\": [{ \"frame\": 1, "
+                  "\"transform\": { \"rotate\": [0, 1, 0] } }] } }, \"objects\": [\n    { "
+                  "\"type\": \"sphere\", \"name\": \"ball\", \"center\": [0, 1, 0],",
+                  "[0, 1, 0] }",
+                  {"\"rotate\" must be"}},
+        ErrorCase{"UnknownKeyInAnObjectKeyframe",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"objects\": { \"ball\": [{ \"frame\": 1, "
+                  "\"transfrom\": {} }] } }, \"objects\": [\n    { \"type\": \"sphere\", \"name\": "
+                  "\"ball\", \"center\": [0, 1, 0],",
+                  "\"transfrom\"",
+                  {"did you mean \"transform\""}},
+        ErrorCase{"AnimatedObjectWithoutKeyframes",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"objects\": { \"ball\": [] } }, \"objects\": "
+                  "[\n    { \"type\": \"sphere\", \"name\": \"ball\", \"center\": [0, 1, 0],",
+                  "[]",
+                  {"\"ball\" has no keyframe"}},
+        ErrorCase{"AnimatedNameOfNoObject",
+                  "\"objects\": [\n    { \"type\": \"sphere\", \"center\": [0, 1, 0],",
+                  "\"animation\": { \"frames\": 4, \"objects\": { \"bal\": [{ \"frame\": 1, "
+                  "\"transform\": { \"translate\": [1, 0, 0] } }] } }, \"objects\": [\n    { "
+                  "\"type\": \"sphere\", \"name\": \"ball\", \"center\": [0, 1, 0],",
+                  "\"bal\"",
+                  {"no object has that \"name\"", "did you mean \"ball\""}},
+        ErrorCase{"NameGivenTwice",
+                  "\"material\": \"glass\" },\n    { \"type\": \"plane\", ",
+                  "\"material\": \"glass\", \"name\": \"x\" },\n    { \"type\": \"plane\", "
+                  "\"name\": \"x\", ",
+                  "\"name\": \"x\", ",
+                  {"\"x\" is already given to the object at test.json:6:"}}),
     caseName);
 
 }  // namespace
