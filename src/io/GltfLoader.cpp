@@ -33,6 +33,7 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstring>
 #include <fstream>
 #include <map>
@@ -517,10 +518,28 @@ std::shared_ptr<const Image> GltfReader::texels(int index, const Color& factor, 
     return result;
 }
 
+// A URI's path as tinygltf reads it (its dlib decoder): %XX is the byte XX, + a space.
+std::string decodedUri(const std::string& uri) {
+    std::string path;
+    for (std::size_t i = 0; i < uri.size(); ++i) {
+        const auto hex = [&](std::size_t at) {
+            return at < uri.size() && std::isxdigit(static_cast<unsigned char>(uri[at]));
+        };
+        if (uri[i] == '%' && hex(i + 1) && hex(i + 2)) {
+            path += static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+        } else {
+            path += uri[i] == '+' ? ' ' : uri[i];
+        }
+    }
+    return path;
+}
+
 }  // namespace
 
 std::shared_ptr<TriangleMesh> GltfLoader::load(const fs::path& path,
-                                               std::vector<std::string>& warnings) {
+                                               std::vector<std::string>& warnings,
+                                               std::vector<fs::path>* externalFiles) {
     InputFile::check(path, "a glTF file", "glTF files", InputFile::kMaxModelBytes);
     if (!fs::exists(path))
         throw InputError(path.string(), "cannot open the glTF file (does it exist?)");
@@ -534,7 +553,20 @@ std::shared_ptr<TriangleMesh> GltfLoader::load(const fs::path& path,
     if (!read)
         throw InputError(path.string(),
                          "cannot read the glTF file: " + oneLine(error.empty() ? warning : error));
-    return GltfReader(path, model, warning, warnings).read();
+    std::shared_ptr<TriangleMesh> mesh = GltfReader(path, model, warning, warnings).read();
+    if (externalFiles) {
+        // Where tinygltf found them: relative to the model's folder, the URI decoded as it
+        // decodes it.
+        const auto addFile = [&](const std::string& uri) {
+            if (!uri.empty() && !tinygltf::IsDataURI(uri))
+                externalFiles->push_back(path.parent_path() / decodedUri(uri));
+        };
+        for (const tinygltf::Buffer& buffer : model.buffers)
+            addFile(buffer.uri);
+        for (const tinygltf::Image& image : model.images)
+            addFile(image.uri);
+    }
+    return mesh;
 }
 
 }  // namespace lancer

@@ -19,8 +19,11 @@ public:
     // beyond its buffer, an index beyond the vertices, a node hierarchy with a cycle) or holds
     // no triangles. What lancer cannot show (skins, morph targets, animations, cameras, lights
     // and other extensions) is appended to `warnings` as "file: warning: message", one per kind.
-    static std::shared_ptr<TriangleMesh> load(const std::filesystem::path& path,
-                                              std::vector<std::string>& warnings);
+    // The files the model's buffers and images were read from (beside a .gltf) are appended to
+    // `externalFiles`, if given: what a render of it depends on besides the model's own file.
+    static std::shared_ptr<TriangleMesh> load(
+        const std::filesystem::path& path, std::vector<std::string>& warnings,
+        std::vector<std::filesystem::path>* externalFiles = nullptr);
 };
 
 }  // namespace lancer

@@ -963,7 +963,11 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadMeshObject(
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadGltfObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
     const auto readGltf = [this](const std::filesystem::path& path) {
-        return GltfLoader::load(path, warnings_);
+        std::vector<std::filesystem::path> externalFiles;
+        std::shared_ptr<TriangleMesh> mesh = GltfLoader::load(path, warnings_, &externalFiles);
+        for (const std::filesystem::path& file : externalFiles)
+            scene_.addSourceFile(file);
+        return mesh;
     };
     return loadModelObject(node, what, transform, "glTF model", readGltf);
 }

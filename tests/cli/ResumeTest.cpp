@@ -88,6 +88,29 @@ TEST(CliResumeRefuses, AnotherRenderOrADamagedFile) {
     refusedWith("", "not a lancer resume file");
 }
 
+// A glTF model's buffers and images are files the render depends on, as the model's own file is.
+TEST(CliResumeRefuses, AfterAGltfModelsBufferOrImageChanged) {
+    const TempFolder folder;
+    const fs::path spot = fs::path(LANCER_SOURCE_DIR) / "scenes/models/spot";
+    for (const char* file : {"spot.gltf", "spot.bin", "spot_texture.png"})
+        fs::copy_file(spot / file, folder / file);
+    nlohmann::json scene = loadWhittedScene();
+    scene["objects"].push_back({{"type", "gltf"},
+                                {"file", "spot.gltf"},
+                                {"transform", {{"translate", {-0.5, 0.6, 2.5}}}}});
+    folder.write("scene.json", scene.dump());
+    for (const char* changed : {"spot.bin", "spot_texture.png"}) {
+        interruptedRender(folder, std::chrono::milliseconds(500));
+        fs::last_write_time(folder / changed,
+                            fs::last_write_time(folder / changed) + std::chrono::hours(1));
+        const RunResult run = runLancer(with(kRender, {"--resume"}), folder.path());
+        EXPECT_EQ(run.exitStatus, 2) << changed << ": " << run;
+        EXPECT_NE(run.standardError.find("the resume file was made for another render"),
+                  std::string::npos)
+            << changed << ": " << run;
+    }
+}
+
 }  // namespace
 }  // namespace lancer::test
 
