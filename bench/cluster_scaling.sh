@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
-# Cluster rendering (docs/CLUSTER.md): whole-process time of the Whitted scene with 1 process of
-# 1 thread, 2 processes of 1 thread (the aim: at least 1.9x on 2 cores), and 1 process of 2
-# threads, measured by hyperfine in one run; and the tile protocol's overhead: 2 processes on a
-# render of many cheap tiles (1 spp) against 1 process of 2 threads.
+# Cluster rendering (docs/CLUSTER.md), measured by hyperfine in one run:
+# - whole-process time of the Whitted scene with 1 process of 1 thread, 2 processes of 1 thread
+#   (the aim: at least 1.9x on 2 cores) and 1 process of 2 threads, at 640 x 480 and 1280 x 960
+#   (16 spp), where mpirun's start-up weighs less;
+# - mpirun's start-up (2 x lancer --version);
+# - the tile protocol's rate: a scene of nothing (each tile a few tens of microseconds) at
+#   4096 x 4096, 1 spp (65,536 tiles), in 1 process of 1 and 2 threads and in 2 processes of 1.
 # Usage: bench/cluster_scaling.sh [runs]   (from the source tree, after a release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
-runs="${1:-5}"
+runs="${1:-3}"
 lancer="$PWD/bin/lancer"
 scene="$PWD/scenes/whitted.json"
 out="$(mktemp -d)"
@@ -15,16 +18,25 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 lscpu | grep -E "Model name" | sed 's/^/# /'
 echo "# SIMD: $(grep -o -E 'avx512[a-z]*|avx2' /proc/cpuinfo | sort -u | tr '\n' ' ')"
 echo "# load: $(cut -d' ' -f1-3 /proc/loadavg)"
-render=(--width 640 --height 480 --spp 16 --quiet)
-hyperfine --runs "$runs" --warmup 1 --export-markdown "$out/render.md" \
-    -n "1 process x 1 thread" "$lancer $scene -o $out/a.pfm --threads 1 ${render[*]}" \
-    -n "2 processes x 1 thread" "mpirun --oversubscribe -np 2 $lancer $scene -o $out/b.pfm --threads 1 ${render[*]}" \
-    -n "1 process x 2 threads" "$lancer $scene -o $out/c.pfm --threads 2 ${render[*]}"
-cmp "$out/a.pfm" "$out/b.pfm" && cmp "$out/a.pfm" "$out/c.pfm" && echo "# the three images are byte-identical"
-cat "$out/render.md"
-cheap=(--width 1280 --height 960 --spp 1 --quiet)
-hyperfine --runs "$runs" --warmup 1 --export-markdown "$out/cheap.md" \
-    -n "1 process x 2 threads, 4800 tiles at 1 spp" "$lancer $scene -o $out/d.pfm --threads 2 ${cheap[*]}" \
-    -n "2 processes x 1 thread, 4800 tiles at 1 spp" "mpirun --oversubscribe -np 2 $lancer $scene -o $out/e.pfm --threads 1 ${cheap[*]}" \
-    -n "mpirun start-up (2 x lancer --version)" "mpirun --oversubscribe -np 2 $lancer --version"
-cat "$out/cheap.md"
+for size in "640 480" "1280 960"; do
+    set -- $size
+    render=(--width "$1" --height "$2" --spp 16 --quiet)
+    hyperfine --runs "$runs" --warmup 1 --export-markdown "$out/render.md" \
+        -n "$1 x $2: 1 process x 1 thread" "$lancer $scene -o $out/a.pfm --threads 1 ${render[*]}" \
+        -n "$1 x $2: 2 processes x 1 thread" "mpirun --oversubscribe -np 2 $lancer $scene -o $out/b.pfm --threads 1 ${render[*]}" \
+        -n "$1 x $2: 1 process x 2 threads" "$lancer $scene -o $out/c.pfm --threads 2 ${render[*]}"
+    cmp "$out/a.pfm" "$out/b.pfm" && cmp "$out/a.pfm" "$out/c.pfm" && echo "# the three images are byte-identical"
+    cat "$out/render.md"
+done
+echo '{"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "background": 0.5}' > "$out/nothing.json"
+cheap=(--width 4096 --height 4096 --spp 1)
+for run in "1 process x 1 thread:$lancer $out/nothing.json -o $out/d.pfm --threads 1" \
+           "1 process x 2 threads:$lancer $out/nothing.json -o $out/d.pfm --threads 2" \
+           "2 processes x 1 thread:mpirun --oversubscribe -np 2 $lancer $out/nothing.json -o $out/e.pfm --threads 1"; do
+    for _ in $(seq "$runs"); do
+        echo "# 65,536 tiles of nothing, ${run%%:*}: $(${run#*:} "${cheap[@]}" 2>&1 | tail -1 | grep -o '[0-9.]* s,' | head -1) (render)"
+    done
+done
+cmp "$out/d.pfm" "$out/e.pfm" && echo "# byte-identical"
+hyperfine --runs "$runs" --warmup 1 -n "mpirun start-up (2 x lancer --version)" \
+    "mpirun --oversubscribe -np 2 $lancer --version" | grep -E "Time|Range"

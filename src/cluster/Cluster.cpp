@@ -118,16 +118,21 @@ bool storeTilePixels(const float* floats, std::size_t count, const PixelWindow& 
 }
 
 // A worker's tiles, asked of the leader ahead of need (two per thread, asked for when half are
-// left) so that a thread seldom waits for the answer. Every MPI call of the worker is made under
-// mutex_ (MPI_THREAD_SERIALIZED).
+// left) so that a thread seldom waits for the answer; when one had to wait all the same (tiles
+// quicker to render than the answer is to come), the next batches are twice as large, up to
+// kMostTilesPerThread a thread. Every MPI call of the worker is made under mutex_
+// (MPI_THREAD_SERIALIZED).
 class TilesFromTheLeader : public TileQueue {
 public:
+    static constexpr int kMostTilesPerThread = 64;
+
     TilesFromTheLeader(int threads, const std::atomic<bool>* cancel)
-        : batch_(2 * std::max(threads, 1)), cancel_(cancel) {}
+        : threads_(std::max(threads, 1)), batch_(2 * threads_), cancel_(cancel) {}
 
     std::optional<std::size_t> next() override {
         std::unique_lock lock(mutex_);
         Pause pause;
+        bool waited = false;
         while (true) {
             if (cancel_ && cancel_->load(std::memory_order_relaxed)) return std::nullopt;
             receiveAnswer();
@@ -139,6 +144,10 @@ public:
                 return tile;
             }
             if (exhausted_ && !asked_) return std::nullopt;
+            if (!waited && answered_) {  // (the first answer is always waited for)
+                waited = true;
+                batch_ = std::min(2 * batch_, kMostTilesPerThread * threads_);
+            }
             lock.unlock();
             pause.wait();
             lock.lock();
@@ -184,6 +193,7 @@ private:
         MPI_Test(&request_, &arrived, &status);
         if (!arrived) return;
         asked_ = false;
+        answered_ = true;
         int count = 0;
         MPI_Get_count(&status, MPI_INT64_T, &count);
         if (count == 0) exhausted_ = true;
@@ -191,13 +201,15 @@ private:
             given_.push_back(static_cast<std::size_t>(answer_[static_cast<std::size_t>(i)]));
     }
 
-    const int batch_;
+    const int threads_;
+    int batch_;  // the tiles asked for at once
     const std::atomic<bool>* cancel_;
     std::mutex mutex_;
     std::deque<std::size_t> given_;
     std::vector<std::int64_t> answer_;
     MPI_Request request_ = MPI_REQUEST_NULL;
     bool asked_ = false;
+    bool answered_ = false;
     bool exhausted_ = false;
 };
 
