@@ -580,8 +580,9 @@ int run(Options options, Cluster& cluster) {
         // A signal between two frames stops before the next (as the leader saw it: every process
         // goes on or stops alike).
         if (cluster.fromLeader(InterruptSignals::requested() ? 1 : 0) != 0) {
-            std::cerr << "lancer: interrupted before frame " << frame << "; the frames before it "
-                      << "were written\n";
+            if (cluster.leader())
+                std::cerr << "lancer: interrupted before frame " << frame
+                          << "; the frames before it were written\n";
             return InterruptSignals::exitStatus();
         }
         const fs::path frameOutput = numberedOutput(output, frame);
