@@ -97,11 +97,12 @@ std::optional<PixelWindow> parseCrop(const std::string& text, int width, int hei
     return w;
 }
 
-// The frames --frames asks for, "A:B" or "A", from 1 to `frames`.
+// The frames --frames asks for, "A:B" or "A"; their range is checked against the animation's
+// frames by checkFrames.
 struct FrameRange {
     int first, last;
 };
-std::optional<FrameRange> parseFrames(const std::string& text, int frames, std::string& error) {
+std::optional<FrameRange> parseFrames(const std::string& text, std::string& error) {
     FrameRange range{};
     char colon = 0;
     std::istringstream in(text);
@@ -114,13 +115,16 @@ std::optional<FrameRange> parseFrames(const std::string& text, int frames, std::
         error = "--frames \"" + text + "\": expected A:B or A (frame numbers, from 1)";
         return std::nullopt;
     }
-    if (range.first < 1 || range.first > range.last || range.last > frames) {
-        error = "--frames " + text +
-                ": the frames must satisfy 1 <= A <= B <= " + std::to_string(frames) +
-                " (the animation's frames)";
-        return std::nullopt;
-    }
     return range;
+}
+
+// The error of a range of --frames (`text`) outside an animation's `frames`, if it is.
+std::optional<std::string> checkFrames(const FrameRange& range, const std::string& text,
+                                       int frames) {
+    if (range.first >= 1 && range.first <= range.last && range.last <= frames) return std::nullopt;
+    return "--frames " + text +
+           ": the frames must satisfy 1 <= A <= B <= " + std::to_string(frames) +
+           " (the animation's frames)";
 }
 
 // The output of an animation's frame: OUT-0001.EXT for frame 1 of OUT.EXT.
@@ -546,8 +550,17 @@ int run(Options options, Cluster& cluster) {
         }
     }
 
+    // The first frame to render is loaded first: the range is checked once the animation's frames
+    // are known.
+    std::optional<FrameRange> asked;
+    if (options.frames) {
+        std::string error;
+        asked = parseFrames(*options.frames, error);
+        if (!asked) return usageError(error);
+    }
+    const int firstLoaded = asked ? asked->first : 1;
     std::vector<std::string> warnings;
-    Scene scene = SceneLoader::loadFile(options.scene, warnings);
+    Scene scene = SceneLoader::loadFile(options.scene, warnings, firstLoaded);
     if (!options.quiet)
         for (const std::string& warning : warnings)
             std::cerr << warning << '\n';
@@ -560,14 +573,11 @@ int run(Options options, Cluster& cluster) {
     }
 
     // An animation: each frame of the range is loaded and rendered in turn, to OUT-0001.EXT...
-    FrameRange range{1, animation->frames};
-    if (options.frames) {
-        std::string error;
-        const std::optional<FrameRange> asked =
-            parseFrames(*options.frames, animation->frames, error);
-        if (!asked) return usageError(error);
-        range = *asked;
-    }
+    const FrameRange range = asked.value_or(FrameRange{1, animation->frames});
+    if (asked)
+        if (const std::optional<std::string> error =
+                checkFrames(*asked, *options.frames, animation->frames))
+            return usageError(*error);
     if (options.window && range.last > range.first)
         return usageError("--window shows one image, and the animation of " + options.scene +
                           " has " + std::to_string(range.last - range.first + 1) +
@@ -595,7 +605,7 @@ int run(Options options, Cluster& cluster) {
                           << " was finished by an earlier run\n";
             continue;
         }
-        if (frame != 1) {
+        if (frame != firstLoaded) {
             std::vector<std::string> again;  // the same warnings as the first frame's
             scene = SceneLoader::loadFile(options.scene, again, frame);
         }
