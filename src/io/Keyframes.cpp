@@ -55,8 +55,10 @@ json weightedSum(const std::vector<Term>& terms) {
     }
     if (first.is_object()) {
         json sum = json::object();
-        for (const auto& [key, ignored] : first.items())
+        for (const auto& item : first.items()) {
+            const std::string& key = item.key();
             sum[key] = members([&key](const json& v) -> const json& { return v[key]; });
+        }
         return sum;
     }
     return first;
