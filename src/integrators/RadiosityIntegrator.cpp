@@ -6,6 +6,7 @@
 #include "integrators/IntegratorRegistry.h"
 #include "lights/Light.h"
 #include "materials/Bsdf.h"
+#include "radiosity/LightIrradiance.h"
 #include "radiosity/RadiositySolver.h"
 #include "sampling/Sampler.h"
 #include "sampling/Sampling.h"
@@ -41,7 +42,7 @@ Color RadiosityIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const 
             // Stratified light samples, placed by this sample's own numbers.
             constexpr int kLightSamples = 16;
             const Vec2 u = sampler.get2D();
-            E = RadiositySolver::irradianceFromLights(
+            E = LightIrradiance::at(
                 scene(), hit.p, hit.ng, n, kLightSamples,
                 hashValues(std::bit_cast<std::uint32_t>(u.x), std::bit_cast<std::uint32_t>(u.y)),
                 rayCount);

@@ -43,6 +43,7 @@
 #include "materials/MaterialParameters.h"
 #include "materials/NormalMap.h"
 #include "math/Transform.h"
+#include "radiosity/RadiosityMethodRegistry.h"
 #include "render/Filter.h"
 #include "render/ToneMapper.h"
 #include "scene/FisheyeCamera.h"
@@ -706,9 +707,12 @@ void SceneLoader::Reader::loadAdaptive(const Node& render, const Node& node) {
 void SceneLoader::Reader::loadRadiosity(const Node& node) {
     requireObject(node, "\"radiosity\"");
     checkKeys(node, "\"radiosity\"",
-              {"patch_size", "element_size", "threshold", "max_shots", "subdivision_levels",
-               "subdivision_tolerance", "visibility_rays"});
+              {"method", "patch_size", "element_size", "threshold", "max_shots",
+               "subdivision_levels", "subdivision_tolerance", "visibility_rays"});
     RadiositySettings& r = scene_.settings().radiosity;
+    if (node.has("method"))
+        r.method =
+            lookUp(RadiosityMethodRegistry::table(), node["method"], "radiosity method").name;
     if (node.has("patch_size")) r.patchSize = readNumberAtLeast(node["patch_size"], 0, false);
     if (node.has("element_size")) r.elementSize = readNumberAtLeast(node["element_size"], 0, false);
     if (node.has("threshold")) {

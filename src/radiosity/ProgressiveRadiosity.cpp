@@ -1,14 +1,15 @@
-#include "radiosity/RadiositySolver.h"
+#include "radiosity/ProgressiveRadiosity.h"
 
 #include <atomic>
 #include <bit>
 #include <chrono>
 #include <cmath>
-#include <unordered_map>
 
 #include "lights/Light.h"
+#include "radiosity/LightIrradiance.h"
 #include "radiosity/PatchMesher.h"
 #include "radiosity/SurfaceProbe.h"
+#include "radiosity/VertexSmoothing.h"
 #include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
 #include "scene/ShadowRays.h"
@@ -41,7 +42,7 @@ constexpr int kAreaLightSamples = 16;
 }  // namespace
 
 template <typename Body>
-std::uint64_t RadiositySolver::parallelFor(std::size_t count, const Body& body) const {
+std::uint64_t ProgressiveRadiosity::parallelFor(std::size_t count, const Body& body) const {
     std::atomic<std::uint64_t> rays{0};
     parallelForChunks(count, 16, [&](std::size_t begin, std::size_t end) {
         if (cancelled()) return;
@@ -55,7 +56,7 @@ std::uint64_t RadiositySolver::parallelFor(std::size_t count, const Body& body) 
     return rays;
 }
 
-RadiositySolver::RadiositySolver(const Scene& scene)
+ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene)
     : scene_(scene), settings_(scene.settings().radiosity), patchSize_(0), formFactor_(scene) {
     const PatchMesher mesher(scene, settings_);
     patchSize_ = mesher.patchSize();
@@ -81,43 +82,18 @@ RadiositySolver::RadiositySolver(const Scene& scene)
         hashValues(h, settings_.maxShots, settings_.subdivisionLevels, settings_.visibilityRays);
 }
 
-Color RadiositySolver::irradianceFromLights(const Scene& scene, const Vec3& p, const Vec3& ng,
-                                            const Vec3& n, int samples, std::uint64_t seed,
-                                            std::uint64_t& rayCount) {
-    Hit from;
-    from.p = p;
-    from.pError = gamma(16) * abs(p);
-    from.ng = ng;
-    Color E;
-    for (std::size_t l = 0; l < scene.lights().size(); ++l) {
-        const Light& light = *scene.lights()[l];
-        const int count = light.isDelta() ? 1 : std::max(samples, light.shadowSamples());
-        Color sum;
-        for (int k = 0; k < count; ++k) {
-            const Vec2 u =
-                light.isDelta() ? Vec2(0.5f, 0.5f) : stratifiedPoint(k, count, hashValues(seed, l));
-            const LightSample ls = light.sample(p, u);
-            const float cosTheta = dot(n, ls.wi);
-            if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
-            sum += cosTheta * ls.irradiance * ShadowRays::transmittance(scene, from, ls, rayCount);
-        }
-        E += sum / static_cast<float>(count);
-    }
-    return E;
-}
-
-std::array<Color, 2> RadiositySolver::lightIrradiance(const Element& e, std::uint64_t key,
-                                                      std::uint64_t& rayCount) const {
+std::array<Color, 2> ProgressiveRadiosity::lightIrradiance(const Element& e, std::uint64_t key,
+                                                           std::uint64_t& rayCount) const {
     std::array<Color, 2> E;
     if (scene_.lights().empty()) return E;
     for (Side side : kBothSides)
-        E[sideIndex(side)] = irradianceFromLights(
+        E[sideIndex(side)] = LightIrradiance::at(
             scene_, e.surfacePoint, e.surfaceNormal, side == Side::Front ? e.normal : -e.normal,
             kAreaLightSamples, hashValues(key, sideIndex(side)), rayCount);
     return E;
 }
 
-void RadiositySolver::lightElements() {
+void ProgressiveRadiosity::lightElements() {
     const std::vector<std::uint32_t> leaves = mesh_.leaves();
     std::vector<std::array<Color, 2>> E(leaves.size());
     rays_ += parallelFor(leaves.size(), [&](std::size_t i, std::uint64_t& rays) {
@@ -134,8 +110,8 @@ void RadiositySolver::lightElements() {
     }
 }
 
-void RadiositySolver::shoot(std::uint32_t shooter, Side side, int rays,
-                            const std::vector<std::uint32_t>& receivers) {
+void ProgressiveRadiosity::shoot(std::uint32_t shooter, Side side, int rays,
+                                 const std::vector<std::uint32_t>& receivers) {
     Patch& patch = mesh_.patches[shooter];
     const std::size_t s = sideIndex(side);
     // Each element of the patch shoots its own unshot radiosity, with its share of the rays.
@@ -196,8 +172,8 @@ void RadiositySolver::shoot(std::uint32_t shooter, Side side, int rays,
     }
 }
 
-std::array<Color, 2> RadiositySolver::gather(const Element& e, std::uint64_t key,
-                                             std::uint64_t& rayCount) const {
+std::array<Color, 2> ProgressiveRadiosity::gather(const Element& e, std::uint64_t key,
+                                                  std::uint64_t& rayCount) const {
     std::array<Color, 2> E = lightIrradiance(e, key, rayCount);
     for (std::uint32_t i = 0; i < mesh_.patches.size(); ++i) {
         if (i == e.patch) continue;
@@ -224,58 +200,9 @@ std::array<Color, 2> RadiositySolver::gather(const Element& e, std::uint64_t key
     return E;
 }
 
-RadiositySolver::Smoothing RadiositySolver::smooth(const std::vector<std::uint32_t>& leaves) const {
-    struct Key {
-        std::int64_t x, y, z;
-        bool operator==(const Key&) const = default;
-    };
-    struct KeyHash {
-        std::size_t operator()(const Key& k) const {
-            return static_cast<std::size_t>(hashValues(static_cast<std::uint64_t>(k.x),
-                                                       static_cast<std::uint64_t>(k.y),
-                                                       static_cast<std::uint64_t>(k.z)));
-        }
-    };
-    // Corners closer than this are one vertex (midpoints of a shared edge are computed alike on
-    // both sides, so the cells only absorb rounding).
-    const double cell = 1e-5 * patchSize_;
-    std::unordered_map<Key, std::vector<std::uint32_t>, KeyHash> buckets;
-    std::vector<Vec3> vertexNormals;
-    std::vector<float> weights;
-    Smoothing s;
-    s.faceVertices.resize(leaves.size());
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-        const Element& e = mesh_.elements[leaves[i]];
-        for (std::size_t k = 0; k < 3; ++k) {
-            const Vec3& p = mesh_.positions[e.vertices[k]];
-            const Key key{std::llround(p.x / cell), std::llround(p.y / cell),
-                          std::llround(p.z / cell)};
-            std::vector<std::uint32_t>& bucket = buckets[key];
-            std::uint32_t vertex = Element::kNone;
-            for (std::uint32_t v : bucket)
-                if (dot(vertexNormals[v], e.normal) > 0.5f) vertex = v;
-            if (vertex == Element::kNone) {
-                vertex = static_cast<std::uint32_t>(vertexNormals.size());
-                vertexNormals.push_back(e.normal);
-                s.vertexIrradiance.emplace_back();
-                weights.push_back(0);
-                bucket.push_back(vertex);
-            }
-            s.faceVertices[i][k] = vertex;
-            weights[vertex] += e.area;
-            for (std::size_t side = 0; side < 2; ++side)
-                s.vertexIrradiance[vertex][side] += e.irradiance[side] * e.area;
-        }
-    }
-    for (std::size_t v = 0; v < weights.size(); ++v)
-        for (Color& c : s.vertexIrradiance[v])
-            c /= weights[v];
-    return s;
-}
-
-std::size_t RadiositySolver::subdivide(int level) {
+std::size_t ProgressiveRadiosity::subdivide(int level) {
     const std::vector<std::uint32_t> leaves = mesh_.leaves();
-    const Smoothing smoothing = smooth(leaves);
+    const VertexSmoothing smoothing(mesh_, leaves, weldingCell());
     float brightest = 0;
     for (std::uint32_t e : leaves)
         for (const Color& c : mesh_.elements[e].irradiance)
@@ -314,58 +241,20 @@ std::size_t RadiositySolver::subdivide(int level) {
     return children.size() / 4;
 }
 
-void RadiositySolver::gatherAtVertices(const std::vector<std::uint32_t>& leaves,
-                                       Smoothing& smoothing) {
-    // Each vertex is gathered at, from the brightest of the leaves around it (so that a corner
-    // on a contact line takes the visible side's value), a point 2% of the way from the vertex to
-    // that leaf's centroid: inside the leaf, not on its edge.
-    struct Site {
-        std::uint32_t leaf = Element::kNone;
-        std::size_t corner = 0;
-        float brightness = -1;
-    };
-    std::vector<Site> sites(smoothing.vertexIrradiance.size());
-    for (std::size_t i = 0; i < leaves.size(); ++i) {
-        const Element& e = mesh_.elements[leaves[i]];
-        const float brightness = std::max(e.irradiance[0].average(), e.irradiance[1].average());
-        for (std::size_t k = 0; k < 3; ++k) {
-            Site& site = sites[smoothing.faceVertices[i][k]];
-            if (brightness > site.brightness) site = {leaves[i], k, brightness};
-        }
-    }
+void ProgressiveRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
     const auto key = static_cast<std::uint64_t>(mesh_.elements.size());
-    rays_ += parallelFor(sites.size(), [&](std::size_t v, std::uint64_t& rays) {
-        const Site& site = sites[v];
-        Element at = mesh_.elements[site.leaf];
-        Vec3 corner = mesh_.positions[at.vertices[site.corner]];
-        const Patch& patch = mesh_.patches[at.patch];
-        // A corner beyond another surface (a box's edge sunk into the floor) is gathered at
-        // halfway to that surface instead. (A curved patch's corners are on its own surface,
-        // which the chord to them would meet.)
-        if (!patch.curved) {
-            const Ray towards{at.surfacePoint, corner - at.surfacePoint};
-            ++rays;
-            const std::optional<Hit> blocker = scene_.intersect(towards, 1);
-            if (blocker && blocker->t > 1e-3f)
-                corner = at.surfacePoint + (0.5f * blocker->t) * towards.direction;
-        }
-        at.centroid = corner + 0.02f * (at.centroid - corner);
-        at.surfacePoint = at.centroid;
-        at.surfaceNormal = at.normal;
-        if (patch.curved)
-            if (const std::optional<Hit> hit = SurfaceProbe::at(patch, at.centroid)) {
-                at.surfacePoint = hit->p;
-                at.surfaceNormal = hit->ng;
-            }
-        smoothing.vertexIrradiance[v] = gather(at, key + v, rays);
-    });
+    rays_ +=
+        parallelFor(smoothing.vertexIrradiance.size(), [&](std::size_t v, std::uint64_t& rays) {
+            smoothing.vertexIrradiance[v] =
+                gather(smoothing.gatherSite(scene_, v, rays), key + v, rays);
+        });
 }
 
-RadiositySolution RadiositySolver::solve() {
+RadiositySolution ProgressiveRadiosity::solve() {
     return *solve({}, nullptr);
 }
 
-std::optional<RadiositySolution> RadiositySolver::solve(
+std::optional<RadiositySolution> ProgressiveRadiosity::solve(
     const std::function<void(const RadiosityProgress&)>& onProgress,
     const std::atomic<bool>* cancel) {
     const auto start = std::chrono::steady_clock::now();
@@ -431,8 +320,8 @@ std::optional<RadiositySolution> RadiositySolver::solve(
 
     if (!carryOn(RadiosityProgress::Phase::Gathering)) return std::nullopt;
     const std::vector<std::uint32_t> leaves = mesh_.leaves();
-    Smoothing smoothing = smooth(leaves);
-    gatherAtVertices(leaves, smoothing);
+    VertexSmoothing smoothing(mesh_, leaves, weldingCell());
+    gatherAtVertices(smoothing);
     if (cancelled()) return std::nullopt;
 
     RadiosityStatistics statistics;
@@ -444,10 +333,11 @@ std::optional<RadiositySolution> RadiositySolver::solve(
     statistics.rays = rays_;
     statistics.seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return makeSolution(leaves, std::move(smoothing), statistics);
+    return std::move(smoothing).solution(mesh_.lookupDistance(patchSize_), fingerprint_,
+                                         statistics);
 }
 
-RadiositySolution RadiositySolver::snapshot() const {
+RadiositySolution ProgressiveRadiosity::snapshot() const {
     const std::vector<std::uint32_t> leaves = mesh_.leaves();
     RadiosityStatistics statistics;
     statistics.patches = mesh_.patches.size();
@@ -456,22 +346,8 @@ RadiositySolution RadiositySolver::snapshot() const {
     statistics.initialPower = initialPower_;
     statistics.residualPower = unshotHistory_.empty() ? 0 : unshotHistory_.back();
     statistics.rays = rays_;
-    return makeSolution(leaves, smooth(leaves), statistics);
-}
-
-RadiositySolution RadiositySolver::makeSolution(const std::vector<std::uint32_t>& leaves,
-                                                Smoothing smoothing,
-                                                const RadiosityStatistics& statistics) const {
-    std::vector<std::array<Vec3, 3>> faces;
-    faces.reserve(leaves.size());
-    for (std::uint32_t e : leaves)
-        faces.push_back(mesh_.corners(mesh_.elements[e]));
-    float lookupDistance = 1e-4f * patchSize_;
-    for (const Patch& p : mesh_.patches)
-        lookupDistance = std::max(lookupDistance, p.probeDistance);
-    return RadiositySolution(std::move(faces), std::move(smoothing.faceVertices),
-                             std::move(smoothing.vertexIrradiance), lookupDistance, fingerprint_,
-                             statistics);
+    return VertexSmoothing(mesh_, leaves, weldingCell())
+        .solution(mesh_.lookupDistance(patchSize_), fingerprint_, statistics);
 }
 
 }  // namespace lancer

@@ -8,8 +8,10 @@
 
 #include "radiosity/FormFactor.h"
 #include "radiosity/RadiosityMesh.h"
+#include "radiosity/RadiosityMethod.h"
 #include "radiosity/RadiosityProgress.h"
 #include "radiosity/RadiositySolution.h"
+#include "radiosity/VertexSmoothing.h"
 #include "scene/RadiositySettings.h"
 
 namespace lancer {
@@ -33,13 +35,12 @@ class Scene;
 //     and everything shot), for the image's interpolation.
 // The result does not depend on the number of threads: each element's share of a shot is
 // computed on its own, from seeds of (patch, element), and added in element order.
-class RadiositySolver {
+class ProgressiveRadiosity : public RadiosityMethod {
 public:
-    explicit RadiositySolver(const Scene& scene);
+    explicit ProgressiveRadiosity(const Scene& scene);
 
-    // A hash of what the solution depends on: the patches (geometry, reflectance, emission), the
-    // lights and the radiosity settings. Saved solutions are checked against it.
-    std::uint64_t fingerprint() const { return fingerprint_; }
+    // Over the patches (geometry, reflectance, emission), the lights and the radiosity settings.
+    std::uint64_t fingerprint() const override { return fingerprint_; }
     const RadiosityMesh& mesh() const { return mesh_; }
 
     RadiositySolution solve();
@@ -50,20 +51,13 @@ public:
     // shot and returns nothing; the solver is then not to be used again.
     std::optional<RadiositySolution> solve(
         const std::function<void(const RadiosityProgress&)>& onProgress,
-        const std::atomic<bool>* cancel);
+        const std::atomic<bool>* cancel) override;
     // The solution as it stands, for a preview during the solve (from onProgress): the leaves'
     // irradiance averaged at their corners, without the final gather.
-    RadiositySolution snapshot() const;
+    RadiositySolution snapshot() const override;
 
     // The unshot power (W, mean over r, g, b) before the first shot and after each one.
     const std::vector<double>& unshotHistory() const { return unshotHistory_; }
-
-    // The irradiance at a surface point (p with error bound on the surface of geometric normal
-    // ng) on the side n faces, from the scene's lights, shadows included: one sample of a delta
-    // light, `samples` stratified samples of the others.
-    static Color irradianceFromLights(const Scene& scene, const Vec3& p, const Vec3& ng,
-                                      const Vec3& n, int samples, std::uint64_t seed,
-                                      std::uint64_t& rayCount);
 
 private:
     void lightElements();
@@ -81,20 +75,10 @@ private:
     std::array<Color, 2> lightIrradiance(const Element& element, std::uint64_t key,
                                          std::uint64_t& rayCount) const;
 
-    // Per leaf, its corners' indices into shared vertices (welded by position, where the
-    // elements' normals agree within 60 degrees), and per vertex the area-weighted mean
-    // irradiance of the leaves around it.
-    struct Smoothing {
-        std::vector<std::array<std::uint32_t, 3>> faceVertices;
-        std::vector<std::array<Color, 2>> vertexIrradiance;
-    };
-    Smoothing smooth(const std::vector<std::uint32_t>& leaves) const;
-    // Replaces the vertices' averages by irradiance gathered at the vertices themselves (Wallace
-    // et al. 1989 evaluate at vertices): corners and contact lines come out right, where
-    // averaging the elements' centroid values smooths them away.
-    void gatherAtVertices(const std::vector<std::uint32_t>& leaves, Smoothing& smoothing);
-    RadiositySolution makeSolution(const std::vector<std::uint32_t>& leaves, Smoothing smoothing,
-                                   const RadiosityStatistics& statistics) const;
+    // Corners closer than this are one vertex (VertexSmoothing).
+    double weldingCell() const { return 1e-5 * patchSize_; }
+    // Replaces the vertices' averages by irradiance gathered at the vertices themselves.
+    void gatherAtVertices(VertexSmoothing& smoothing);
     bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
     // Runs body(i, rayCount) for i in [0, count) on all threads, and adds up the rays. Once the
     // solve is cancelled, the ranges not started yet are skipped (it is being abandoned).

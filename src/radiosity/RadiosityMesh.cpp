@@ -1,5 +1,7 @@
 #include "radiosity/RadiosityMesh.h"
 
+#include <algorithm>
+
 namespace lancer {
 
 std::vector<std::array<Vec3, 3>> RadiosityMesh::subdivide(const std::array<Vec3, 3>& triangle,
@@ -65,6 +67,13 @@ std::vector<std::uint32_t> RadiosityMesh::leaves() const {
     for (std::uint32_t i = 0; i < elements.size(); ++i)
         if (elements[i].isLeaf()) result.push_back(i);
     return result;
+}
+
+float RadiosityMesh::lookupDistance(float patchSize) const {
+    float distance = 1e-4f * patchSize;
+    for (const Patch& p : patches)
+        distance = std::max(distance, p.probeDistance);
+    return distance;
 }
 
 Color RadiosityMesh::unshotPower() const {

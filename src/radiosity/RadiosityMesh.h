@@ -29,6 +29,9 @@ public:
     std::array<Vec3, 3> corners(const Element& element) const;
     // The indices of the elements that have no children.
     std::vector<std::uint32_t> leaves() const;
+    // How far from a leaf a solution looks its points up: beyond rounding on flat patches, and
+    // as far as the true surface of curved ones is from their chords.
+    float lookupDistance(float patchSize) const;
     // The power (W) received by the patches and not shot yet, over both sides.
     Color unshotPower() const;
 };

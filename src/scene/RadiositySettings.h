@@ -1,10 +1,13 @@
 #pragma once
 
+#include <string>
+
 namespace lancer {
 
 // The scene file's "radiosity" block (docs/SCENE-FORMAT.md). Sizes of 0 mean "derived from the
 // scene's size".
 struct RadiositySettings {
+    std::string method = "progressive";  // a name in RadiosityMethodRegistry
     float patchSize = 0;    // longest edge of a shooting patch; 0: the scene's diagonal / 8
     float elementSize = 0;  // longest edge of a receiving element; 0: patchSize / 2
     // Shooting stops once the unshot power left is below this fraction of the power emitted.

@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "RadiosityTestSupport.h"
-#include "radiosity/RadiositySolver.h"
+#include "radiosity/ProgressiveRadiosity.h"
 
 namespace lancer::test {
 namespace {
@@ -33,11 +33,11 @@ Scene furnaceBox() {
     return loadScene(closedBox("glow"), R"(, "radiosity": {"patch_size": 0.5, "threshold": 1e-4})");
 }
 
-TEST(RadiositySolverTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
+TEST(ProgressiveRadiosityTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
     // Every element sees the rest of the closed box (form factors summing to 1), whose radiosity
     // is B = pi Le + rho E everywhere: E = pi Le / (1 - rho) on the inner side of every element.
     Scene scene = furnaceBox();
-    RadiositySolver solver(scene);
+    ProgressiveRadiosity solver(scene);
     const RadiositySolution solution = solver.solve();
     const float expected = kPi * kEmission / (1 - kAlbedo);
     ASSERT_GT(solver.mesh().elements.size(), 100u);
@@ -52,9 +52,9 @@ TEST(RadiositySolverTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
     EXPECT_NEAR(E->g, expected, 0.005f * expected);
 }
 
-TEST(RadiositySolverTest, UnshotPowerFallsMonotonicallyBelowTheThreshold) {
+TEST(ProgressiveRadiosityTest, UnshotPowerFallsMonotonicallyBelowTheThreshold) {
     Scene scene = furnaceBox();
-    RadiositySolver solver(scene);
+    ProgressiveRadiosity solver(scene);
     solver.solve();
     const std::vector<double>& history = solver.unshotHistory();
     ASSERT_GT(history.size(), 10u);
@@ -64,11 +64,11 @@ TEST(RadiositySolverTest, UnshotPowerFallsMonotonicallyBelowTheThreshold) {
     EXPECT_GT(history[history.size() - 2], 1e-4 * history.front());  // it stopped right there
 }
 
-TEST(RadiositySolverTest, EnergyBalanceInAClosedBox) {
+TEST(ProgressiveRadiosityTest, EnergyBalanceInAClosedBox) {
     // What the emitters put in is what the surfaces absorb, (1 - rho) E A summed, plus what is
     // left unshot.
     Scene scene = furnaceBox();
-    RadiositySolver solver(scene);
+    ProgressiveRadiosity solver(scene);
     const RadiositySolution solution = solver.solve();
     double absorbed = 0;
     for (const Element& e : solver.mesh().elements)
@@ -77,13 +77,13 @@ TEST(RadiositySolverTest, EnergyBalanceInAClosedBox) {
     EXPECT_NEAR(absorbed + solution.statistics().residualPower, emitted, 2e-3 * emitted);
 }
 
-TEST(RadiositySolverTest, ClosedSphereFurnace) {
+TEST(ProgressiveRadiosityTest, ClosedSphereFurnace) {
     // The camera-free version of the sphere furnace: every element's inner irradiance is
     // pi Le / (1 - rho), the sphere being tessellated into a closed convex polyhedron.
     Scene scene = loadScene(R"({"type": "sphere", "center": [0.5, 0.5, 0.5], "radius": 1,
                                 "material": "glow"})",
                             R"(, "radiosity": {"threshold": 1e-4, "patch_size": 1})");
-    RadiositySolver solver(scene);
+    ProgressiveRadiosity solver(scene);
     solver.solve();
     const float expected = kPi * kEmission / (1 - kAlbedo);
     for (const Element& e : solver.mesh().elements)
@@ -101,9 +101,9 @@ Scene shadowedFloor(int levels) {
                          std::to_string(levels) + "}");
 }
 
-TEST(RadiositySolverTest, AdaptiveSubdivisionRefinesTheShadowBoundary) {
+TEST(ProgressiveRadiosityTest, AdaptiveSubdivisionRefinesTheShadowBoundary) {
     Scene coarse = shadowedFloor(0), refined = shadowedFloor(3);
-    RadiositySolver coarseSolver(coarse), refinedSolver(refined);
+    ProgressiveRadiosity coarseSolver(coarse), refinedSolver(refined);
     const RadiositySolution a = coarseSolver.solve(), b = refinedSolver.solve();
     EXPECT_GT(b.statistics().elements, a.statistics().elements + 20);
     // The finest elements gather near the shadow's edge (|x| or |z| about 0.9 on the floor:
@@ -126,12 +126,12 @@ TEST(RadiositySolverTest, AdaptiveSubdivisionRefinesTheShadowBoundary) {
     EXPECT_NEAR(lit->r, 10 * (3 / std::sqrt(d2)) / d2, 0.05f * 10 * (3 / std::sqrt(d2)) / d2);
 }
 
-TEST(RadiositySolverTest, SameSolutionWhateverTheThreadCount) {
+TEST(ProgressiveRadiosityTest, SameSolutionWhateverTheThreadCount) {
     const auto solve = [](int threads) {
         const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                                         static_cast<std::size_t>(threads));
         Scene scene = shadowedFloor(2);
-        RadiositySolver solver(scene);
+        ProgressiveRadiosity solver(scene);
         solver.solve();
         std::vector<Color> values;
         for (const Element& e : solver.mesh().elements)
@@ -142,7 +142,7 @@ TEST(RadiositySolverTest, SameSolutionWhateverTheThreadCount) {
 }
 
 // The irradiance the solution gives at every leaf's centroid, both sides, and its statistics.
-std::vector<Color> sampleSolution(const RadiositySolver& solver,
+std::vector<Color> sampleSolution(const ProgressiveRadiosity& solver,
                                   const RadiositySolution& solution) {
     std::vector<Color> values;
     for (const Element& e : solver.mesh().elements) {
@@ -156,9 +156,9 @@ std::vector<Color> sampleSolution(const RadiositySolver& solver,
     return values;
 }
 
-TEST(RadiositySolverTest, ProgressReportsAndSnapshotsLeaveTheSolutionAsIs) {
+TEST(ProgressiveRadiosityTest, ProgressReportsAndSnapshotsLeaveTheSolutionAsIs) {
     Scene plainScene = furnaceBox(), watchedScene = furnaceBox();
-    RadiositySolver plain(plainScene), watched(watchedScene);
+    ProgressiveRadiosity plain(plainScene), watched(watchedScene);
     const RadiositySolution expected = plain.solve();
 
     std::vector<RadiosityProgress> reports;
@@ -192,9 +192,9 @@ TEST(RadiositySolverTest, ProgressReportsAndSnapshotsLeaveTheSolutionAsIs) {
     EXPECT_EQ(snapshotFaces.back(), expected.faceCount()) << "the gather neither";
 }
 
-TEST(RadiositySolverTest, ASnapshotShowsTheLightShotSoFar) {
+TEST(ProgressiveRadiosityTest, ASnapshotShowsTheLightShotSoFar) {
     Scene scene = furnaceBox();
-    RadiositySolver solver(scene);
+    ProgressiveRadiosity solver(scene);
     std::vector<float> centre;  // the floor's centre's irradiance, at each shot
     solver.solve(
         [&](const RadiosityProgress& progress) {
@@ -212,9 +212,9 @@ TEST(RadiositySolverTest, ASnapshotShowsTheLightShotSoFar) {
         EXPECT_GE(centre[k], centre[k - 1]);
 }
 
-TEST(RadiositySolverTest, CancellingStopsBeforeTheNextShot) {
+TEST(ProgressiveRadiosityTest, CancellingStopsBeforeTheNextShot) {
     Scene scene = furnaceBox();
-    RadiositySolver solver(scene);
+    ProgressiveRadiosity solver(scene);
     std::atomic<bool> cancel{false};
     std::uint64_t lastShots = 0;
     int reports = 0;
@@ -230,9 +230,9 @@ TEST(RadiositySolverTest, CancellingStopsBeforeTheNextShot) {
     EXPECT_EQ(reports, 4) << "no shot after the cancel";
 }
 
-TEST(RadiositySolverTest, CancelledBeforeTheStartNothingIsShot) {
+TEST(ProgressiveRadiosityTest, CancelledBeforeTheStartNothingIsShot) {
     Scene scene = furnaceBox();
-    RadiositySolver solver(scene);
+    ProgressiveRadiosity solver(scene);
     const std::atomic<bool> cancel{true};
     int reports = 0;
     EXPECT_FALSE(solver.solve([&](const RadiosityProgress&) { ++reports; }, &cancel));

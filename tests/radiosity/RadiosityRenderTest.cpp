@@ -292,7 +292,8 @@ INSTANTIATE_TEST_SUITE_P(
         KeyErrorCase{"ThresholdOfOne", R"({"threshold": 1})", 28, "below 1"},
         KeyErrorCase{"NoVisibilityRays", R"({"visibility_rays": 0})", 34, "at least 1"},
         KeyErrorCase{"TooManyLevels", R"({"subdivision_levels": 9})", 37, "at most 8"},
-        KeyErrorCase{"FractionalShots", R"({"max_shots": 2.5})", 28, "whole number"}),
+        KeyErrorCase{"FractionalShots", R"({"max_shots": 2.5})", 28, "whole number"},
+        KeyErrorCase{"UnknownMethod", R"({"method": "hierarchal"})", 25, "radiosity method"}),
     CaseName{});
 
 }  // namespace
