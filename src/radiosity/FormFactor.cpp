@@ -10,6 +10,17 @@
 
 namespace lancer {
 
+namespace {
+
+// A point of the triangle from one of the unit square, uniform over the triangle when the
+// square's point is (the square's cells keep their areas).
+Vec3 uniformPointOn(const std::array<Vec3, 3>& t, const Vec2& uv) {
+    const float su = std::sqrt(uv.x);
+    return (1 - su) * t[0] + su * (1 - uv.y) * t[1] + su * uv.y * t[2];
+}
+
+}  // namespace
+
 FormFactor::FormFactor(const Scene& scene) : scene_(scene) {}
 
 double FormFactor::pointToTriangle(const Vec3d& p, const Vec3d& n,
@@ -43,31 +54,55 @@ double FormFactor::pointToTriangle(const Vec3d& p, const Vec3d& n,
     return std::abs(sum) / (2 * std::numbers::pi);
 }
 
+double FormFactor::pointToSideOfTriangle(const Vec3d& p, const Vec3d& n,
+                                         const std::array<Vec3, 3>& triangle,
+                                         const Vec3& triangleNormal, Side triangleSide) {
+    const double height = dot(Vec3d(triangleNormal), p - Vec3d(triangle[0]));
+    if (triangleSide == Side::Front ? !(height > 0) : !(height < 0)) return 0;
+    return pointToTriangle(p, n, triangle);
+}
+
 Color FormFactor::elementToTriangle(const Element& receiver, Side receiverSide,
                                     const std::array<Vec3, 3>& triangle, const Patch& shooter,
                                     Side shooterSide, int rays, std::uint64_t seed,
                                     std::uint64_t& rayCount) const {
-    const Vec3d p(receiver.centroid);
-    // The shooter's side must face the receiver.
-    const double height = dot(Vec3d(shooter.normal), p - Vec3d(shooter.corners[0]));
-    if (shooterSide == Side::Front ? !(height > 0) : !(height < 0)) return Color(0);
     const Vec3 n = receiverSide == Side::Front ? receiver.normal : -receiver.normal;
-    const double unoccluded = pointToTriangle(p, Vec3d(n), triangle);
+    const double unoccluded = pointToSideOfTriangle(Vec3d(receiver.centroid), Vec3d(n), triangle,
+                                                    shooter.normal, shooterSide);
     if (!(unoccluded > 0)) return Color(0);
+    return static_cast<float>(unoccluded) *
+           visibility(receiver, nullptr, n, triangle, shooter, shooterSide, rays, seed, rayCount);
+}
 
+Color FormFactor::areaVisibility(const Element& receiver,
+                                 const std::array<Vec3, 3>& receiverCorners, bool receiverCurved,
+                                 Side receiverSide, const std::array<Vec3, 3>& triangle,
+                                 const Patch& shooter, Side shooterSide, int rays,
+                                 std::uint64_t seed, std::uint64_t& rayCount) const {
+    const Vec3 n = receiverSide == Side::Front ? receiver.normal : -receiver.normal;
+    return visibility(receiver, receiverCurved ? nullptr : &receiverCorners, n, triangle, shooter,
+                      shooterSide, rays, seed, rayCount);
+}
+
+Color FormFactor::visibility(const Element& receiver, const std::array<Vec3, 3>* receiverCorners,
+                             const Vec3& n, const std::array<Vec3, 3>& triangle,
+                             const Patch& shooter, Side shooterSide, int rays, std::uint64_t seed,
+                             std::uint64_t& rayCount) const {
     Hit from;
     from.p = receiver.surfacePoint;
-    from.pError = gamma(16) * abs(from.p);
     from.ng = receiver.surfaceNormal;
+    Vec3 start = receiver.centroid;  // on the flat element, for the test of what is behind
     Color visible;
     int counted = 0;
     for (int k = 0; k < rays; ++k) {
-        // Uniform over the triangle (the square's cells keep their areas).
-        const Vec2 uv = stratifiedPoint(k, rays, seed);
-        const float su = std::sqrt(uv.x);
-        Vec3 target =
-            (1 - su) * triangle[0] + su * (1 - uv.y) * triangle[1] + su * uv.y * triangle[2];
-        if (!(dot(n, target - receiver.centroid) > 0)) continue;  // behind the receiver
+        if (receiverCorners) {
+            // Independent of the target's cell: pairing cell k with cell k would be biased.
+            start = uniformPointOn(*receiverCorners, stratifiedPoint(0, 1, hashValues(seed, k, 1)));
+            from.p = start;
+        }
+        from.pError = gamma(16) * abs(from.p);
+        Vec3 target = uniformPointOn(triangle, stratifiedPoint(k, rays, seed));
+        if (!(dot(n, target - start) > 0)) continue;  // behind the receiver
         if (shooter.curved) {
             // Onto the true surface, and a little off it towards the receiver: rounding must
             // not let a nearby receiver's ray meet the surface just before the target.
@@ -83,7 +118,7 @@ Color FormFactor::elementToTriangle(const Element& receiver, Side receiverSide,
         ++counted;
     }
     if (counted == 0) return Color(0);
-    return static_cast<float>(unoccluded) * visible / static_cast<float>(counted);
+    return visible / static_cast<float>(counted);
 }
 
 }  // namespace lancer

@@ -27,6 +27,12 @@ public:
     static double pointToTriangle(const Vec3d& p, const Vec3d& n,
                                   const std::array<Vec3, 3>& triangle);
 
+    // The same, for a point p on the side `triangleSide` of the triangle's plane (of unit
+    // normal triangleNormal) only: 0 on the other side.
+    static double pointToSideOfTriangle(const Vec3d& p, const Vec3d& n,
+                                        const std::array<Vec3, 3>& triangle,
+                                        const Vec3& triangleNormal, Side triangleSide);
+
     // F from the side `receiverSide` of the element to the side `shooterSide` of a triangle of the
     // patch (one of its elements, or the patch's own corners), visibility included (per colour
     // channel, through transmissive surfaces) from `rays` rays to points of the triangle that
@@ -36,7 +42,24 @@ public:
                             Side shooterSide, int rays, std::uint64_t seed,
                             std::uint64_t& rayCount) const;
 
+    // The fraction (per colour channel) of `rays` rays that get through from points of the
+    // receiver's side `receiverSide` to points of the side `shooterSide` of a triangle of the
+    // patch `shooter`: from points spread uniformly over the receiver (from its surface point,
+    // when it is curved: its own surface would block the chords' points) to stratified points of
+    // the triangle. Rays to points behind the receiver are not counted; 0 when none is left.
+    Color areaVisibility(const Element& receiver, const std::array<Vec3, 3>& receiverCorners,
+                         bool receiverCurved, Side receiverSide,
+                         const std::array<Vec3, 3>& triangle, const Patch& shooter,
+                         Side shooterSide, int rays, std::uint64_t seed,
+                         std::uint64_t& rayCount) const;
+
 private:
+    // The visibility of both: from `receiver`'s surface point, or from points spread over its
+    // corners' triangle when they are given.
+    Color visibility(const Element& receiver, const std::array<Vec3, 3>* receiverCorners,
+                     const Vec3& n, const std::array<Vec3, 3>& triangle, const Patch& shooter,
+                     Side shooterSide, int rays, std::uint64_t seed, std::uint64_t& rayCount) const;
+
     const Scene& scene_;
 };
 

@@ -1,7 +1,6 @@
 #include "radiosity/ProgressiveRadiosity.h"
 
 #include <atomic>
-#include <bit>
 #include <chrono>
 #include <cmath>
 
@@ -19,16 +18,6 @@ namespace lancer {
 
 namespace {
 
-std::uint64_t fold(std::uint64_t h, float v) {
-    return hashValues(h, std::bit_cast<std::uint32_t>(v));
-}
-std::uint64_t fold(std::uint64_t h, const Vec3& v) {
-    return fold(fold(fold(h, v.x), v.y), v.z);
-}
-std::uint64_t fold(std::uint64_t h, const Color& c) {
-    return fold(fold(fold(h, c.r), c.g), c.b);
-}
-
 // A shot carrying at least this fraction of the power put in traces all its visibility rays.
 constexpr double kStrongShot = 1e-3;
 
@@ -41,45 +30,13 @@ constexpr int kAreaLightSamples = 16;
 
 }  // namespace
 
-template <typename Body>
-std::uint64_t ProgressiveRadiosity::parallelFor(std::size_t count, const Body& body) const {
-    std::atomic<std::uint64_t> rays{0};
-    parallelForChunks(count, 16, [&](std::size_t begin, std::size_t end) {
-        if (cancelled()) return;
-        // Counted per chunk and added once: one counter that every ray wrote to would be
-        // contended by all the threads.
-        std::uint64_t local = 0;
-        for (std::size_t i = begin; i != end; ++i)
-            body(i, local);
-        rays += local;
-    });
-    return rays;
-}
-
 ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene)
     : scene_(scene), settings_(scene.settings().radiosity), patchSize_(0), formFactor_(scene) {
     const PatchMesher mesher(scene, settings_);
     patchSize_ = mesher.patchSize();
     mesh_ = mesher.mesh();
 
-    std::uint64_t h = hashValues(mesh_.patches.size(), mesh_.elements.size());
-    for (const Patch& p : mesh_.patches) {
-        for (const Vec3& c : p.corners)
-            h = fold(h, c);
-        h = fold(fold(h, p.emission[0]), p.emission[1]);
-        for (std::uint32_t e = p.firstElement; e < p.firstElement + p.elementCount; ++e)
-            h = fold(h, mesh_.elements[e].reflectance);
-    }
-    // A light is known by what it delivers to two fixed points, and by its power.
-    for (const auto& light : scene.lights())
-        for (const Vec3& probe : {Vec3(0.123f, 0.456f, 0.789f), Vec3(-7.1f, 3.3f, -2.9f)}) {
-            const LightSample s = light->sample(probe, Vec2(0.25f, 0.75f));
-            h = fold(fold(fold(fold(h, s.wi), s.irradiance), s.position), light->power(1));
-        }
-    h = fold(fold(fold(h, settings_.patchSize), settings_.elementSize), settings_.threshold);
-    h = fold(h, settings_.subdivisionTolerance);
-    fingerprint_ =
-        hashValues(h, settings_.maxShots, settings_.subdivisionLevels, settings_.visibilityRays);
+    fingerprint_ = mesh_.fingerprint(scene, settings_);
 }
 
 std::array<Color, 2> ProgressiveRadiosity::lightIrradiance(const Element& e, std::uint64_t key,
@@ -96,9 +53,10 @@ std::array<Color, 2> ProgressiveRadiosity::lightIrradiance(const Element& e, std
 void ProgressiveRadiosity::lightElements() {
     const std::vector<std::uint32_t> leaves = mesh_.leaves();
     std::vector<std::array<Color, 2>> E(leaves.size());
-    rays_ += parallelFor(leaves.size(), [&](std::size_t i, std::uint64_t& rays) {
-        E[i] = lightIrradiance(mesh_.elements[leaves[i]], leaves[i], rays);
-    });
+    rays_ +=
+        parallelForCounting(leaves.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
+            E[i] = lightIrradiance(mesh_.elements[leaves[i]], leaves[i], rays);
+        });
     for (std::size_t i = 0; i < leaves.size(); ++i) {
         Element& e = mesh_.elements[leaves[i]];
         Patch& patch = mesh_.patches[e.patch];
@@ -132,16 +90,17 @@ void ProgressiveRadiosity::shoot(std::uint32_t shooter, Side side, int rays,
     // F from each receiver side to each shooting element: formFactors[(i * 2 + r) * n + k].
     const std::size_t n = shots.size();
     std::vector<Color> formFactors(receivers.size() * 2 * n);
-    rays_ += parallelFor(receivers.size(), [&](std::size_t i, std::uint64_t& rayCount) {
-        const std::uint32_t e = receivers[i];
-        const Element& element = mesh_.elements[e];
-        if (element.patch == shooter) return;  // flat: it cannot see itself
-        for (Side r : kBothSides)
-            for (std::size_t k = 0; k < n; ++k)
-                formFactors[(i * 2 + sideIndex(r)) * n + k] = formFactor_.elementToTriangle(
-                    element, r, mesh_.corners(mesh_.elements[shots[k].element]), patch, side,
-                    raysEach, hashValues(shots[k].element, s, e, sideIndex(r)), rayCount);
-    });
+    rays_ += parallelForCounting(
+        receivers.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rayCount) {
+            const std::uint32_t e = receivers[i];
+            const Element& element = mesh_.elements[e];
+            if (element.patch == shooter) return;  // flat: it cannot see itself
+            for (Side r : kBothSides)
+                for (std::size_t k = 0; k < n; ++k)
+                    formFactors[(i * 2 + sideIndex(r)) * n + k] = formFactor_.elementToTriangle(
+                        element, r, mesh_.corners(mesh_.elements[shots[k].element]), patch, side,
+                        raysEach, hashValues(shots[k].element, s, e, sideIndex(r)), rayCount);
+        });
     // A form factor taken at the receiver's centroid stands for its whole area: a large receiver
     // close to a small shooter (a ceiling just above a lamp's back) can then take in more than
     // the shooter sends. Reciprocity bounds what all receivers take, sum A_j F_jk <= A_k. Sums
@@ -233,9 +192,10 @@ std::size_t ProgressiveRadiosity::subdivide(int level) {
         SurfaceProbe::place(mesh_.patches[child.patch], mesh_.corners(child), child);
     }
     std::vector<std::array<Color, 2>> E(children.size());
-    rays_ += parallelFor(children.size(), [&](std::size_t i, std::uint64_t& rays) {
-        E[i] = gather(mesh_.elements[children[i]], children[i], rays);
-    });
+    rays_ +=
+        parallelForCounting(children.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
+            E[i] = gather(mesh_.elements[children[i]], children[i], rays);
+        });
     for (std::size_t i = 0; i < children.size(); ++i)
         mesh_.elements[children[i]].irradiance = E[i];
     return children.size() / 4;
@@ -243,8 +203,8 @@ std::size_t ProgressiveRadiosity::subdivide(int level) {
 
 void ProgressiveRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
     const auto key = static_cast<std::uint64_t>(mesh_.elements.size());
-    rays_ +=
-        parallelFor(smoothing.vertexIrradiance.size(), [&](std::size_t v, std::uint64_t& rays) {
+    rays_ += parallelForCounting(
+        smoothing.vertexIrradiance.size(), 16, cancel_, [&](std::size_t v, std::uint64_t& rays) {
             smoothing.vertexIrradiance[v] =
                 gather(smoothing.gatherSite(scene_, v, rays), key + v, rays);
         });

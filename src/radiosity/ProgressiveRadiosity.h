@@ -80,11 +80,6 @@ private:
     // Replaces the vertices' averages by irradiance gathered at the vertices themselves.
     void gatherAtVertices(VertexSmoothing& smoothing);
     bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
-    // Runs body(i, rayCount) for i in [0, count) on all threads, and adds up the rays. Once the
-    // solve is cancelled, the ranges not started yet are skipped (it is being abandoned).
-    template <typename Body>
-    std::uint64_t parallelFor(std::size_t count, const Body& body) const;
-
     const Scene& scene_;
     RadiositySettings settings_;
     float patchSize_;

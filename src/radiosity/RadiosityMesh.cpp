@@ -1,8 +1,27 @@
 #include "radiosity/RadiosityMesh.h"
 
 #include <algorithm>
+#include <bit>
+
+#include "lights/Light.h"
+#include "sampling/Sampling.h"
+#include "scene/Scene.h"
 
 namespace lancer {
+
+namespace {
+
+std::uint64_t fold(std::uint64_t h, float v) {
+    return hashValues(h, std::bit_cast<std::uint32_t>(v));
+}
+std::uint64_t fold(std::uint64_t h, const Vec3& v) {
+    return fold(fold(fold(h, v.x), v.y), v.z);
+}
+std::uint64_t fold(std::uint64_t h, const Color& c) {
+    return fold(fold(fold(h, c.r), c.g), c.b);
+}
+
+}  // namespace
 
 std::vector<std::array<Vec3, 3>> RadiosityMesh::subdivide(const std::array<Vec3, 3>& triangle,
                                                           int n) {
@@ -67,6 +86,27 @@ std::vector<std::uint32_t> RadiosityMesh::leaves() const {
     for (std::uint32_t i = 0; i < elements.size(); ++i)
         if (elements[i].isLeaf()) result.push_back(i);
     return result;
+}
+
+std::uint64_t RadiosityMesh::fingerprint(const Scene& scene,
+                                         const RadiositySettings& settings) const {
+    std::uint64_t h = hashValues(patches.size(), elements.size());
+    for (const Patch& p : patches) {
+        for (const Vec3& c : p.corners)
+            h = fold(h, c);
+        h = fold(fold(h, p.emission[0]), p.emission[1]);
+        for (std::uint32_t e = p.firstElement; e < p.firstElement + p.elementCount; ++e)
+            h = fold(h, elements[e].reflectance);
+    }
+    // A light is known by what it delivers to two fixed points, and by its power.
+    for (const auto& light : scene.lights())
+        for (const Vec3& probe : {Vec3(0.123f, 0.456f, 0.789f), Vec3(-7.1f, 3.3f, -2.9f)}) {
+            const LightSample s = light->sample(probe, Vec2(0.25f, 0.75f));
+            h = fold(fold(fold(fold(h, s.wi), s.irradiance), s.position), light->power(1));
+        }
+    h = fold(fold(fold(h, settings.patchSize), settings.elementSize), settings.threshold);
+    h = fold(h, settings.subdivisionTolerance);
+    return hashValues(h, settings.maxShots, settings.subdivisionLevels, settings.visibilityRays);
 }
 
 float RadiosityMesh::lookupDistance(float patchSize) const {

@@ -6,8 +6,11 @@
 
 #include "radiosity/Element.h"
 #include "radiosity/Patch.h"
+#include "scene/RadiositySettings.h"
 
 namespace lancer {
+
+class Scene;
 
 // The scene's diffuse surfaces cut into shooting patches and, below them, receiving elements
 // (two-level substructuring, Cohen et al. 1986), all flat triangles in world space.
@@ -29,6 +32,9 @@ public:
     std::array<Vec3, 3> corners(const Element& element) const;
     // The indices of the elements that have no children.
     std::vector<std::uint32_t> leaves() const;
+    // A hash of the patches (geometry, emission, the elements' reflectance), the scene's lights
+    // and the radiosity settings, for the solutions' fingerprints.
+    std::uint64_t fingerprint(const Scene& scene, const RadiositySettings& settings) const;
     // How far from a leaf a solution looks its points up: beyond rounding on flat patches, and
     // as far as the true surface of curved ones is from their chords.
     float lookupDistance(float patchSize) const;

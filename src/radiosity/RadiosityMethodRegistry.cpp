@@ -1,5 +1,6 @@
 #include "radiosity/RadiosityMethodRegistry.h"
 
+#include "radiosity/HierarchicalRadiosity.h"
 #include "radiosity/ProgressiveRadiosity.h"
 
 namespace lancer {
@@ -16,6 +17,7 @@ std::unique_ptr<RadiosityMethod> create(const Scene& scene) {
 const Registry<RadiosityMethodEntry>& RadiosityMethodRegistry::table() {
     static const Registry<RadiosityMethodEntry> methods{
         {"progressive", create<ProgressiveRadiosity>},
+        {"hierarchical", create<HierarchicalRadiosity>},
     };
     return methods;
 }

@@ -15,7 +15,10 @@ struct RadiositySettings {
     int maxShots = 100000;              // a bound on the shots, whatever the threshold
     int subdivisionLevels = 2;          // how many times an element may be split in four
     float subdivisionTolerance = 0.1f;  // relative jump in irradiance that makes an element split
-    int visibilityRays = 4;             // rays per form factor, to points on the shooter
+    int visibilityRays = 4;
+    // Hierarchical: a link whose reflected radiosity may be wrong by more than this fraction of
+    // the mean radiosity put in is refined.
+    float refinementTolerance = 0.02f;             // rays per form factor, to points on the shooter
 };
 
 }  // namespace lancer

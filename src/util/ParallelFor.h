@@ -3,7 +3,9 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
+#include <atomic>
 #include <cstddef>
+#include <cstdint>
 
 namespace lancer {
 
@@ -23,6 +25,24 @@ void parallelFor(std::size_t count, std::size_t grainSize, Body&& body) {
         for (std::size_t i = begin; i < end; ++i)
             body(i);
     });
+}
+
+// Runs body(i, count) for every i in [0, count) as parallelFor, where each body adds what it
+// counts (rays) to `count`, and returns the sum. Counted per chunk and added once: one counter
+// that every body wrote to would be contended by all the threads. Once `*cancel` (if given) is
+// set, the chunks not started yet are skipped (the work is being abandoned).
+template <typename Body>
+std::uint64_t parallelForCounting(std::size_t count, std::size_t grainSize,
+                                  const std::atomic<bool>* cancel, const Body& body) {
+    std::atomic<std::uint64_t> total{0};
+    parallelForChunks(count, grainSize, [&](std::size_t begin, std::size_t end) {
+        if (cancel && cancel->load(std::memory_order_relaxed)) return;
+        std::uint64_t local = 0;
+        for (std::size_t i = begin; i != end; ++i)
+            body(i, local);
+        total += local;
+    });
+    return total;
 }
 
 }  // namespace lancer

@@ -18,16 +18,6 @@ namespace {
 constexpr float kAlbedo = 0.6f;
 constexpr float kEmission = 0.25f;
 
-// A closed box [0, 1]^3 of inward-facing squares (their front, the emitting side, inside).
-std::string closedBox(const std::string& material) {
-    return square(Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0), material) + ", " +  // floor
-           square(Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1), material) + ", " +  // ceiling
-           square(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), material) + ", " +  // back
-           square(Vec3(0, 0, 1), Vec3(0, 1, 0), Vec3(1, 0, 0), material) + ", " +  // front
-           square(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), material) + ", " +  // left
-           square(Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0), material);          // right
-}
-
 Scene furnaceBox() {
     // "glow" (loadScene's): albedo kAlbedo, emission kEmission.
     return loadScene(closedBox("glow"), R"(, "radiosity": {"patch_size": 0.5, "threshold": 1e-4})");

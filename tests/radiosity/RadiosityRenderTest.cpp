@@ -134,6 +134,18 @@ TEST(RadiosityRender, CornellBoxAgainstMitsuba) {
     EXPECT_LT(error, 0.06);
 }
 
+TEST(RadiosityRender, HierarchicalCornellBoxAgainstMitsuba) {
+    // Hierarchical radiosity with its default settings. Measured relative RMSE against Mitsuba's
+    // 16384-spp path tracing: 0.066 off the lamp (0.0047 absolute), solved in about 2 s on 2
+    // threads.
+    const Image reference = loadImage(fs::path(LANCER_CORNELL_DIR) / "mitsuba-path-16384spp.exr");
+    const Image image = renderCornell({{"method", "hierarchical"}}, 16);
+    ASSERT_EQ(image.width, reference.width);
+    const double error = relativeRmseOffTheLamp(image, reference);
+    std::cout << "hierarchical radiosity vs Mitsuba: relative RMSE off the lamp " << error << '\n';
+    EXPECT_LT(error, 0.075);
+}
+
 // A scene file and its views, in a folder of their own.
 struct SolutionFiles {
     TempFolder folder;
@@ -293,6 +305,8 @@ INSTANTIATE_TEST_SUITE_P(
         KeyErrorCase{"NoVisibilityRays", R"({"visibility_rays": 0})", 34, "at least 1"},
         KeyErrorCase{"TooManyLevels", R"({"subdivision_levels": 9})", 37, "at most 8"},
         KeyErrorCase{"FractionalShots", R"({"max_shots": 2.5})", 28, "whole number"},
+        KeyErrorCase{"NoRefinementTolerance", R"({"refinement_tolerance": 0})", 39,
+                     "greater than 0"},
         KeyErrorCase{"UnknownMethod", R"({"method": "hierarchal"})", 25, "radiosity method"}),
     CaseName{});
 

@@ -33,6 +33,15 @@ std::string square(const Vec3& corner, const Vec3& u, const Vec3& v, const std::
            triangle(corner, corner + u + v, corner + v);
 }
 
+std::string closedBox(const std::string& material) {
+    return square(Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0), material) + ", " +  // floor
+           square(Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1), material) + ", " +  // ceiling
+           square(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), material) + ", " +  // back
+           square(Vec3(0, 0, 1), Vec3(0, 1, 0), Vec3(1, 0, 0), material) + ", " +  // front
+           square(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), material) + ", " +  // left
+           square(Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0), material);          // right
+}
+
 std::vector<std::uint32_t> patchesFacing(const RadiosityMesh& mesh, const Vec3& normal) {
     std::vector<std::uint32_t> result;
     for (std::uint32_t i = 0; i < mesh.patches.size(); ++i)

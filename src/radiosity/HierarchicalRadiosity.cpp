@@ -1,0 +1,539 @@
+#include "radiosity/HierarchicalRadiosity.h"
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+
+#include "radiosity/LightIrradiance.h"
+#include "radiosity/PatchMesher.h"
+#include "radiosity/SurfaceProbe.h"
+#include "radiosity/VertexSmoothing.h"
+#include "sampling/Sampling.h"
+#include "scene/Scene.h"
+#include "util/ParallelFor.h"
+
+namespace lancer {
+
+namespace {
+
+// Light samples per area light at each of an element's three points (more if the light asks for
+// more), and at each vertex in the final gather.
+constexpr int kAreaLightSamplesPerPoint = 8;
+constexpr int kAreaLightSamples = 16;
+
+// A link whose source sends at least this fraction of the power put in traces all its visibility
+// rays in the final gather, the others one.
+constexpr double kStrongLink = 1e-3;
+
+// How far an element's corners are pulled towards its centroid where its form factors' spread is
+// probed (on the corner itself, a neighbour's form factor is singular).
+constexpr float kCornerInset = 0.05f;
+
+// In the final gather, a source whose form factor from the vertex is above this is gathered from
+// its children.
+constexpr double kNearField = 0.02;
+
+// A leaf's form factor to a source is the mean of its three points' above this, its centroid's
+// below (where it hardly varies over the leaf).
+constexpr double kLeafNearField = 1e-3;
+
+// Jacobi iterations and refinement passes stop at these, whatever the tolerances.
+constexpr int kMaxRefinementPasses = 12;
+
+float longestEdge(const std::array<Vec3, 3>& t) {
+    return std::max({length(t[1] - t[0]), length(t[2] - t[1]), length(t[0] - t[2])});
+}
+
+// The three points of a triangle where its form factors and light are evaluated: the
+// quadrature rule of degree 2 with points inside the triangle (barycentric 2/3, 1/6, 1/6), away
+// from the edges that neighbours and contact lines share.
+std::array<Vec3, 3> quadraturePoints(const std::array<Vec3, 3>& t) {
+    constexpr float kNear = 4.0f / 6, kFar = 1.0f / 6;
+    return {kNear * t[0] + kFar * (t[1] + t[2]), kNear * t[1] + kFar * (t[2] + t[0]),
+            kNear * t[2] + kFar * (t[0] + t[1])};
+}
+
+}  // namespace
+
+HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene)
+    : scene_(scene), settings_(scene.settings().radiosity), formFactor_(scene) {
+    // The patches are the hierarchies' roots: meshed with elements as large as the patches.
+    const PatchMesher sizes(scene, settings_);
+    patchSize_ = sizes.patchSize();
+    smallestEdge_ = sizes.elementSize() / static_cast<float>(1 << settings_.subdivisionLevels);
+    RadiositySettings roots = settings_;
+    roots.patchSize = roots.elementSize = patchSize_;
+    mesh_ = PatchMesher(scene, roots).mesh();
+    fingerprint_ = hashValues(mesh_.fingerprint(scene, settings_), 0x4852u,  // "HR"
+                              std::bit_cast<std::uint32_t>(settings_.refinementTolerance));
+    for (const Patch& p : mesh_.patches)
+        for (std::uint32_t e = p.firstElement; e < p.firstElement + p.elementCount; ++e)
+            roots_.push_back(e);
+}
+
+std::size_t HierarchicalRadiosity::linkCount() const {
+    std::size_t count = 0;
+    for (const auto& l : links_)
+        count += l.size();
+    return count;
+}
+
+void HierarchicalRadiosity::grow() {
+    const std::size_t n = mesh_.elements.size(), old = radiosity_.size();
+    parent_.resize(n, Element::kNone);
+    emitted_.resize(n);
+    fromLights_.resize(n);
+    lightSpread_.resize(n);
+    radiosity_.resize(n);
+    gathered_.resize(n);
+    links_.resize(n);
+    for (std::size_t e = old; e < n; ++e) {
+        const Patch& patch = mesh_.patches[mesh_.elements[e].patch];
+        for (std::size_t side = 0; side < 2; ++side)
+            emitted_[e][side] = kPi * patch.emission[side];
+        radiosity_[e] = parent_[e] == Element::kNone ? emitted_[e] : radiosity_[parent_[e]];
+    }
+}
+
+std::uint32_t HierarchicalRadiosity::split(std::uint32_t element) {
+    if (!mesh_.elements[element].isLeaf()) return mesh_.elements[element].firstChild;
+    const std::uint32_t first = mesh_.split(element);
+    parent_.resize(mesh_.elements.size(), Element::kNone);
+    for (std::uint32_t c = first; c < first + 4; ++c)
+        parent_[c] = element;
+    grow();
+    return first;
+}
+
+bool HierarchicalRadiosity::splittable(std::uint32_t element) const {
+    return longestEdge(mesh_.corners(mesh_.elements[element])) > smallestEdge_;
+}
+
+std::uint32_t HierarchicalRadiosity::splitChoice(std::uint32_t receiver,
+                                                 std::uint32_t source) const {
+    const bool r = splittable(receiver), s = splittable(source);
+    if (r && s)
+        return mesh_.elements[receiver].area >= mesh_.elements[source].area ? receiver : source;
+    return r ? receiver : s ? source : Element::kNone;
+}
+
+void HierarchicalRadiosity::prepareElements(std::size_t first) {
+    const std::size_t count = mesh_.elements.size() - first;
+    rays_ += parallelForCounting(count, 8, cancel_, [&](std::size_t i, std::uint64_t& rays) {
+        const auto e = static_cast<std::uint32_t>(first + i);
+        Element& element = mesh_.elements[e];
+        const Patch& patch = mesh_.patches[element.patch];
+        const std::array<Vec3, 3> corners = mesh_.corners(element);
+        SurfaceProbe::place(patch, corners, element);
+        fromLights_[e] = {};
+        lightSpread_[e] = 0;
+        if (scene_.lights().empty()) return;
+        for (Side side : kBothSides) {
+            const Vec3 n = side == Side::Front ? element.normal : -element.normal;
+            float least = kInfinity, most = 0;
+            Color sum;
+            const std::array<Vec3, 3> points = quadraturePoints(corners);
+            for (std::size_t k = 0; k < 3; ++k) {
+                Vec3 p = points[k], ng = element.normal;
+                if (patch.curved)
+                    if (const std::optional<Hit> hit = SurfaceProbe::at(patch, p)) {
+                        p = hit->p;
+                        ng = hit->ng;
+                    }
+                const Color E = LightIrradiance::at(scene_, p, ng, n, kAreaLightSamplesPerPoint,
+                                                    hashValues(e, sideIndex(side), k), rays);
+                sum += E;
+                least = std::min(least, E.average());
+                most = std::max(most, E.average());
+            }
+            fromLights_[e][sideIndex(side)] = sum / 3.0f;
+            lightSpread_[e] = std::max(lightSpread_[e], most - least);
+        }
+    });
+}
+
+double HierarchicalRadiosity::linkError(std::uint32_t receiver, const Link& link) const {
+    const double reflected = static_cast<double>(mesh_.elements[receiver].reflectance.average()) *
+                             radiosity_[link.source][sideIndex(link.sourceSide)].average();
+    return reflected * (link.spread + (link.partlyVisible() ? link.unoccluded : 0.0f));
+}
+
+HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c,
+                                                              std::uint64_t& rayCount) const {
+    Decision d;
+    const Element& receiver = mesh_.elements[c.receiver];
+    const Element& source = mesh_.elements[c.source];
+    if (receiver.patch == source.patch) return d;  // flat: it cannot see itself
+    const Patch& sourcePatch = mesh_.patches[source.patch];
+    const std::array<Vec3, 3> sourceCorners = mesh_.corners(source);
+    const std::array<Vec3, 3> receiverCorners = mesh_.corners(receiver);
+    // The source's side that faces the receiver's centroid; receiver points behind it see none
+    // of it.
+    const float height = dot(source.normal, receiver.centroid - sourceCorners[0]);
+    if (height == 0 || !std::isfinite(height)) return d;
+    const Side sourceSide = height > 0 ? Side::Front : Side::Back;
+    const std::array<Vec3, 3> points = quadraturePoints(receiverCorners);
+    const std::uint32_t choice = splitChoice(c.receiver, c.source);
+    const double reflected = static_cast<double>(receiver.reflectance.average()) *
+                             radiosity_[c.source][sideIndex(sourceSide)].average();
+    // The spread is taken over the corners too (pulled in a little): the form factor to a
+    // neighbour across an edge rises steeply towards that edge, between the quadrature points.
+    std::array<Vec3, 6> probes;
+    for (std::size_t k = 0; k < 3; ++k) {
+        probes[k] = points[k];
+        probes[3 + k] =
+            receiverCorners[k] + kCornerInset * (receiver.centroid - receiverCorners[k]);
+    }
+    for (Side side : kBothSides) {
+        const Vec3 n = side == Side::Front ? receiver.normal : -receiver.normal;
+        double sum = 0, least = kInfinity, most = 0;
+        for (std::size_t k = 0; k < probes.size(); ++k) {
+            const double F = FormFactor::pointToSideOfTriangle(
+                Vec3d(probes[k]), Vec3d(n), sourceCorners, source.normal, sourceSide);
+            if (k < 3) sum += F;
+            least = std::min(least, F);
+            most = std::max(most, F);
+        }
+        if (!(most > 0)) continue;
+        Link link;
+        link.source = c.source;
+        link.receiverSide = side;
+        link.sourceSide = sourceSide;
+        // Reciprocity bounds what the receiver takes: A_r F_rs = A_s F_sr <= A_s.
+        link.unoccluded =
+            static_cast<float>(std::min(sum / 3, static_cast<double>(source.area / receiver.area)));
+        link.spread = static_cast<float>(most - least);
+        if (choice != Element::kNone && reflected * link.spread > epsilon_) {
+            d.split = choice;
+            return d;
+        }
+        link.visibility = formFactor_.areaVisibility(
+            receiver, receiverCorners, mesh_.patches[receiver.patch].curved, side, sourceCorners,
+            sourcePatch, sourceSide, settings_.visibilityRays,
+            hashValues(c.receiver, c.source, sideIndex(side)), rayCount);
+        if (choice != Element::kNone && linkError(c.receiver, link) > epsilon_) {
+            d.split = choice;
+            return d;
+        }
+        if (link.visibility.isBlack()) continue;
+        d.links[static_cast<std::size_t>(d.linkCount++)] = link;
+    }
+    return d;
+}
+
+std::size_t HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
+    std::size_t splits = 0;
+    std::size_t prepared = mesh_.elements.size();
+    while (!candidates.empty() && !cancelled()) {
+        std::vector<Decision> decisions(candidates.size());
+        rays_ += parallelForCounting(candidates.size(), 64, cancel_,
+                                     [&](std::size_t i, std::uint64_t& rays) {
+                                         decisions[i] = decide(candidates[i], rays);
+                                     });
+        if (cancelled()) break;
+        // In candidate order, whatever the threads: the same hierarchy every time.
+        std::vector<Candidate> next;
+        for (std::size_t i = 0; i < candidates.size(); ++i) {
+            const Candidate& c = candidates[i];
+            const Decision& d = decisions[i];
+            if (d.split == Element::kNone) {
+                for (int k = 0; k < d.linkCount; ++k)
+                    links_[c.receiver].push_back(d.links[static_cast<std::size_t>(k)]);
+                continue;
+            }
+            if (mesh_.elements[d.split].isLeaf()) ++splits;
+            const std::uint32_t first = split(d.split);
+            for (std::uint32_t child = first; child < first + 4; ++child)
+                next.push_back(d.split == c.receiver ? Candidate{child, c.source}
+                                                     : Candidate{c.receiver, child});
+        }
+        prepareElements(prepared);
+        prepared = mesh_.elements.size();
+        candidates = std::move(next);
+    }
+    // The lights' shadows and highlights: leaves whose light varies too much are split.
+    for (bool again = true; again && !cancelled();) {
+        const std::size_t before = mesh_.elements.size();
+        for (std::uint32_t e = 0; e < before; ++e) {
+            const Element& element = mesh_.elements[e];
+            if (!element.isLeaf() || !splittable(e)) continue;
+            const double error =
+                static_cast<double>(element.reflectance.average()) * lightSpread_[e] * element.area;
+            if (error > epsilon_) {
+                split(e);
+                ++splits;
+            }
+        }
+        prepareElements(before);
+        again = mesh_.elements.size() > before;
+    }
+    return splits;
+}
+
+std::vector<HierarchicalRadiosity::Candidate> HierarchicalRadiosity::relink() {
+    std::vector<Candidate> candidates;
+    for (std::uint32_t r = 0; r < links_.size(); ++r) {
+        std::vector<Link>& kept = links_[r];
+        // A link that now carries too much is taken apart: its candidates are the children of
+        // the end the refinement would split.
+        std::vector<Link> links = std::move(kept);
+        kept.clear();
+        std::uint32_t previousSource = Element::kNone;
+        for (const Link& link : links) {
+            const std::uint32_t choice = splitChoice(r, link.source);
+            if (choice == Element::kNone || linkError(r, link) <= epsilon_) {
+                kept.push_back(link);
+                continue;
+            }
+            // Both sides of one pair make one candidate.
+            if (link.source == previousSource) continue;
+            previousSource = link.source;
+            candidates.push_back({r, link.source});
+        }
+    }
+    // A pair whose link on one side stayed would be linked twice on that side: drop those links.
+    for (const Candidate& c : candidates)
+        std::erase_if(links_[c.receiver], [&](const Link& l) { return l.source == c.source; });
+    return candidates;
+}
+
+void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
+    std::vector<std::uint32_t> leaves = mesh_.leaves();
+    leafTerms_.assign(resolved ? mesh_.elements.size() : 0, {});
+    coverage_.assign(mesh_.elements.size(), {0, 0});
+    parallelFor(leaves.size(), 8, [&](std::size_t i) {
+        const std::uint32_t leaf = leaves[i];
+        const Element& element = mesh_.elements[leaf];
+        const std::array<Vec3, 3> points = quadraturePoints(mesh_.corners(element));
+        for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e])
+            for (const Link& link : links_[e]) {
+                if (!resolved) {
+                    coverage_[leaf][sideIndex(link.receiverSide)] += link.formFactor().average();
+                    continue;
+                }
+                const Element& source = mesh_.elements[link.source];
+                const std::array<Vec3, 3> corners = mesh_.corners(source);
+                const Vec3d n(link.receiverSide == Side::Front ? element.normal : -element.normal);
+                const auto F = [&](const Vec3& p) {
+                    return FormFactor::pointToSideOfTriangle(Vec3d(p), n, corners, source.normal,
+                                                             link.sourceSide);
+                };
+                // The centroid's form factor, or the three points' mean where the source is seen
+                // large enough for it to vary over the leaf.
+                double unoccluded = F(element.centroid);
+                if (unoccluded > kLeafNearField)
+                    unoccluded = (F(points[0]) + F(points[1]) + F(points[2])) / 3;
+                unoccluded = std::min(unoccluded, static_cast<double>(source.area / element.area));
+                if (!(unoccluded > 0)) continue;
+                const Color FV = static_cast<float>(unoccluded) * link.visibility;
+                leafTerms_[leaf].push_back({link.source, link.receiverSide, link.sourceSide, FV});
+                coverage_[leaf][sideIndex(link.receiverSide)] += FV.average();
+            }
+    });
+}
+
+double HierarchicalRadiosity::iteration(bool resolved) {
+    // Jacobi: every element gathers from the radiosities of the last iteration.
+    if (!resolved)
+        parallelFor(links_.size(), 64, [&](std::size_t r) {
+            std::array<Color, 2> E;
+            for (const Link& link : links_[r])
+                E[sideIndex(link.receiverSide)] +=
+                    link.formFactor() * radiosity_[link.source][sideIndex(link.sourceSide)];
+            gathered_[r] = E;
+        });
+    const std::vector<std::uint32_t> leaves = mesh_.leaves();
+    std::vector<std::array<Color, 2>> B(leaves.size());
+    parallelFor(leaves.size(), 64, [&](std::size_t i) {
+        const std::uint32_t leaf = leaves[i];
+        std::array<Color, 2> E;
+        if (resolved) {
+            for (const LeafTerm& t : leafTerms_[leaf])
+                E[sideIndex(t.receiverSide)] +=
+                    t.formFactor * radiosity_[t.source][sideIndex(t.sourceSide)];
+        } else {
+            // Push: what the leaf's ancestors gathered reaches it too.
+            for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e])
+                for (std::size_t side = 0; side < 2; ++side)
+                    E[side] += gathered_[e][side];
+        }
+        Element& element = mesh_.elements[leaf];
+        for (std::size_t side = 0; side < 2; ++side) {
+            // A receiver sees at most its hemisphere: where its form factors add up to more
+            // (within the refinement's error), what they bring is scaled back, so that no
+            // element gains power and the iterations converge.
+            const float coverage = coverage_[leaf][side];
+            const Color total =
+                (coverage > 1 ? E[side] / coverage : E[side]) + fromLights_[leaf][side];
+            element.irradiance[side] = total;
+            B[i][side] = emitted_[leaf][side] + element.reflectance * total;
+        }
+    });
+    double change = 0;
+    for (std::size_t i = 0; i < leaves.size(); ++i) {
+        const std::uint32_t leaf = leaves[i];
+        for (std::size_t side = 0; side < 2; ++side)
+            change += std::abs(static_cast<double>(B[i][side].average()) -
+                               radiosity_[leaf][side].average()) *
+                      mesh_.elements[leaf].area;
+        radiosity_[leaf] = B[i];
+    }
+    // Pull: an element's radiosity is its children's, area-weighted (children come after their
+    // parent, so from the last element back every child is done before its parent).
+    for (std::size_t k = mesh_.elements.size(); k-- > 0;) {
+        const Element& element = mesh_.elements[k];
+        if (element.isLeaf()) continue;
+        std::array<Color, 2> sum;
+        for (std::uint32_t c = element.firstChild; c < element.firstChild + 4; ++c)
+            for (std::size_t side = 0; side < 2; ++side)
+                sum[side] += (mesh_.elements[c].area / element.area) * radiosity_[c][side];
+        radiosity_[k] = sum;
+    }
+    ++iterations_;
+    return change;
+}
+
+bool HierarchicalRadiosity::iterate(bool resolved, const std::function<bool()>& carryOn) {
+    double previous = 0;
+    for (int k = 0; iterations_ < static_cast<std::uint64_t>(settings_.maxShots); ++k) {
+        residual_ = iteration(resolved);
+        if (!carryOn()) return false;
+        // The power still to come, if each iteration changes it by the same ratio as the last.
+        const double ratio = k > 0 && previous > 0 ? std::min(residual_ / previous, 0.99) : 0.99;
+        previous = residual_;
+        if (residual_ * ratio / (1 - ratio) <= settings_.threshold * initialPower_) break;
+    }
+    return true;
+}
+
+Color HierarchicalRadiosity::gatherFrom(const Element& at, const Link& link, std::uint32_t source,
+                                        std::uint64_t key, std::uint64_t& rayCount) const {
+    const Element& element = mesh_.elements[source];
+    const std::array<Vec3, 3> corners = mesh_.corners(element);
+    const Vec3 n = link.receiverSide == Side::Front ? at.normal : -at.normal;
+    const double unoccluded = FormFactor::pointToSideOfTriangle(
+        Vec3d(at.centroid), Vec3d(n), corners, element.normal, link.sourceSide);
+    if (!(unoccluded > 0)) return Color(0);
+    // A source seen large is gathered from its children: its radiosity varies over it (darker
+    // towards the corners), which its average would not show.
+    if (!element.isLeaf() && unoccluded > kNearField) {
+        Color sum;
+        for (std::uint32_t c = element.firstChild; c < element.firstChild + 4; ++c)
+            sum += gatherFrom(at, link, c, key, rayCount);
+        return sum;
+    }
+    const Color& B = radiosity_[source][sideIndex(link.sourceSide)];
+    if (!link.partlyVisible()) return static_cast<float>(unoccluded) * link.visibility * B;
+    const bool strong = B.average() * element.area >= kStrongLink * initialPower_;
+    return B * formFactor_.elementToTriangle(
+                   at, link.receiverSide, corners, mesh_.patches[element.patch], link.sourceSide,
+                   strong ? settings_.visibilityRays : 1, hashValues(key, source), rayCount);
+}
+
+void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
+    const std::size_t count = smoothing.vertexIrradiance.size();
+    rays_ += parallelForCounting(count, 16, cancel_, [&](std::size_t v, std::uint64_t& rays) {
+        const Element at = smoothing.gatherSite(scene_, v, rays);
+        std::array<Color, 2> E;
+        if (!scene_.lights().empty())
+            for (Side side : kBothSides)
+                E[sideIndex(side)] = LightIrradiance::at(
+                    scene_, at.surfacePoint, at.surfaceNormal,
+                    side == Side::Front ? at.normal : -at.normal, kAreaLightSamples,
+                    hashValues(v, sideIndex(side), 0x76u), rays);
+        for (std::uint32_t e = smoothing.siteLeaf(v); e != Element::kNone; e = parent_[e])
+            for (const Link& link : links_[e])
+                E[sideIndex(link.receiverSide)] += gatherFrom(
+                    at, link, link.source, hashValues(v, sideIndex(link.receiverSide)), rays);
+        smoothing.vertexIrradiance[v] = E;
+    });
+}
+
+RadiosityStatistics HierarchicalRadiosity::statistics(std::size_t leaves) const {
+    RadiosityStatistics s;
+    s.patches = mesh_.patches.size();
+    s.elements = leaves;
+    s.shots = iterations_;
+    s.initialPower = initialPower_;
+    s.residualPower = residual_;
+    s.rays = rays_;
+    return s;
+}
+
+std::optional<RadiositySolution> HierarchicalRadiosity::solve(
+    const std::function<void(const RadiosityProgress&)>& onProgress,
+    const std::atomic<bool>* cancel) {
+    const auto start = std::chrono::steady_clock::now();
+    cancel_ = cancel;
+    RadiosityProgress progress;
+    RadiosityProgress::Phase phase = RadiosityProgress::Phase::Refining;
+    const auto carryOn = [&]() {
+        if (cancelled()) return false;
+        if (onProgress) {
+            progress.phase = phase;
+            progress.shots = iterations_;
+            progress.unshotPower = residual_;
+            progress.initialPower = initialPower_;
+            progress.seconds =
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            onProgress(progress);
+        }
+        return !cancelled();
+    };
+
+    grow();
+    prepareElements(0);
+    // The power put in: emitted, and reflected from the lights' light.
+    for (std::uint32_t root : roots_) {
+        const Element& e = mesh_.elements[root];
+        for (std::size_t side = 0; side < 2; ++side) {
+            radiosity_[root][side] = emitted_[root][side] + e.reflectance * fromLights_[root][side];
+            initialPower_ += static_cast<double>(radiosity_[root][side].average()) * e.area;
+        }
+    }
+    residual_ = initialPower_;
+    double area = 0;
+    for (std::uint32_t root : roots_)
+        area += mesh_.elements[root].area;
+    epsilon_ = static_cast<double>(settings_.refinementTolerance) * initialPower_ / area;
+    if (!carryOn()) return std::nullopt;
+
+    std::vector<Candidate> candidates;
+    candidates.reserve(roots_.size() * roots_.size());
+    for (std::uint32_t r : roots_)
+        for (std::uint32_t s : roots_)
+            if (r != s) candidates.push_back({r, s});
+    for (int pass = 0; pass < kMaxRefinementPasses && initialPower_ > 0; ++pass) {
+        phase = RadiosityProgress::Phase::Refining;
+        refine(std::move(candidates));
+        if (!carryOn()) return std::nullopt;
+        resolveAtLeaves(false);
+        phase = RadiosityProgress::Phase::Iterating;
+        if (!iterate(false, carryOn)) return std::nullopt;
+        candidates = relink();
+        if (candidates.empty()) break;
+    }
+
+    // The leaves' radiosities once more, from their own form factors to the links' sources.
+    resolveAtLeaves(true);
+    if (!iterate(true, carryOn)) return std::nullopt;
+
+    phase = RadiosityProgress::Phase::Gathering;
+    if (!carryOn()) return std::nullopt;
+    VertexSmoothing smoothing(mesh_, mesh_.leaves(), 1e-5 * patchSize_);
+    gatherAtVertices(smoothing);
+    if (cancelled()) return std::nullopt;
+    RadiosityStatistics s = statistics(mesh_.leaves().size());
+    s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return std::move(smoothing).solution(mesh_.lookupDistance(patchSize_), fingerprint_, s);
+}
+
+RadiositySolution HierarchicalRadiosity::snapshot() const {
+    std::vector<std::uint32_t> leaves = mesh_.leaves();
+    const std::size_t count = leaves.size();
+    return VertexSmoothing(mesh_, std::move(leaves), 1e-5 * patchSize_)
+        .solution(mesh_.lookupDistance(patchSize_), fingerprint_, statistics(count));
+}
+
+}  // namespace lancer

@@ -1,0 +1,170 @@
+#pragma once
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <vector>
+
+#include "radiosity/FormFactor.h"
+#include "radiosity/RadiosityMesh.h"
+#include "radiosity/RadiosityMethod.h"
+#include "scene/RadiositySettings.h"
+
+namespace lancer {
+
+class Scene;
+class VertexSmoothing;
+
+// Hierarchical radiosity (Hanrahan, Salzman and Aupperle 1991) over the scene's patches:
+//  1. every patch is the root of a hierarchy of elements, each split in four at its edges'
+//     midpoints when needed, down to `element_size / 2^subdivision_levels`;
+//  2. every pair of patches that see each other is linked, and a link whose reflected radiosity
+//     may be wrong by more than `refinement_tolerance` times the mean radiosity put in (the power
+//     put in over the area; the error: reflectance x source radiosity x the spread of the form
+//     factor over the receiver, plus the whole form factor when the link is partly occluded) is
+//     replaced by links from the larger of its two ends' children; the form factor of a link is the
+//     exact point-to-polygon formula averaged over three points of the receiver, its visibility the
+//     fraction of `visibility_rays` rays from points of the receiver to points of the source that
+//     get through;
+//  3. elements whose light from the scene's lights (point, spot, area...) varies by more than the
+//     same tolerance across them are split too;
+//  4. Jacobi iterations: each element gathers the radiosity of its links' sources, each leaf adds
+//     what its ancestors gathered (push), and the radiosities are averaged back up (pull), until
+//     the power still to come (extrapolated from the last two iterations) is below `threshold`
+//     times the power put in;
+//  5. steps 2-4 again with the new radiosities (links refined where they now carry more), until
+//     nothing more is refined;
+//  6. a last round of iterations where each leaf gathers through the links of itself and its
+//     ancestors with form factors from the leaf itself (in a closed room they add up to 1);
+//  7. the irradiance at every vertex of the leaves is gathered there through the same links,
+//     from the children of the sources it sees large, visibility traced again for the partly
+//     occluded links.
+// Where a leaf's form factors add up to more than 1 (within the refinement's error), what they
+// bring is scaled back: no element gains power, and the iterations converge.
+// The result does not depend on the number of threads: every form factor and visibility is
+// computed on its own from seeds of its two elements, and the refinement decisions are taken in
+// element order.
+class HierarchicalRadiosity : public RadiosityMethod {
+public:
+    explicit HierarchicalRadiosity(const Scene& scene);
+
+    // Over the patches, the lights and the radiosity settings (not the same as progressive's).
+    std::uint64_t fingerprint() const override { return fingerprint_; }
+    const RadiosityMesh& mesh() const { return mesh_; }
+
+    std::optional<RadiositySolution> solve(
+        const std::function<void(const RadiosityProgress&)>& onProgress,
+        const std::atomic<bool>* cancel) override;
+    // The leaves' irradiance averaged at their corners, without the final gather.
+    RadiositySolution snapshot() const override;
+
+    // A link gathers the radiosity of one side of its source element onto one side of the element
+    // that holds it, with the form factor from the receiver to the source.
+    struct Link {
+        std::uint32_t source = 0;
+        Side receiverSide = Side::Front;
+        Side sourceSide = Side::Front;
+        float unoccluded = 0;  // the form factor without occlusion
+        float spread = 0;      // its spread over the receiver (max - min of the three points)
+        Color visibility;      // the fraction of rays that got through, per channel
+        Color formFactor() const { return unoccluded * visibility; }
+        bool partlyVisible() const {
+            return visibility.maxComponent() > 0 &&
+                   std::min({visibility.r, visibility.g, visibility.b}) < 1;
+        }
+    };
+    // The links gathered by each element (index as in mesh().elements).
+    const std::vector<std::vector<Link>>& links() const { return links_; }
+    std::size_t linkCount() const;
+    // Radiosity (W/m^2) leaving each side of each element, as the last iteration left it.
+    const std::vector<std::array<Color, 2>>& radiosity() const { return radiosity_; }
+    // How wrong the radiosity a link brings to its receiver may be (W/m^2), by the oracle of
+    // step 2.
+    double linkError(std::uint32_t receiver, const Link& link) const;
+    // The form factors a leaf gathers through, added up on one side.
+    float coverage(std::uint32_t leaf, Side side) const { return coverage_[leaf][sideIndex(side)]; }
+    // Below this (W/m^2), a link is not refined.
+    double refinementThreshold() const { return epsilon_; }
+
+private:
+    struct Candidate {
+        std::uint32_t receiver, source;
+    };
+    // What to do with a candidate link: the links it makes, or which end to split.
+    struct Decision {
+        std::array<Link, 2> links;
+        int linkCount = 0;
+        std::uint32_t split = Element::kNone;
+    };
+
+    // Resizes the per-element state to the mesh's elements (new ones inherit their parent's
+    // radiosity until the next push-pull).
+    void grow();
+    // Splits an element (unless it is already split) and returns its first child.
+    std::uint32_t split(std::uint32_t element);
+    bool splittable(std::uint32_t element) const;
+    // Which end of the pair to split (the larger of the splittable ones), or kNone.
+    std::uint32_t splitChoice(std::uint32_t receiver, std::uint32_t source) const;
+    // Places the elements from `first` on (surface point, reflectance) and computes the light
+    // they receive from the scene's lights.
+    void prepareElements(std::size_t first);
+    Decision decide(const Candidate& candidate, std::uint64_t& rayCount) const;
+    // Refines the candidates, and the candidates their splits make, into links; then splits the
+    // leaves whose light varies too much. Returns how many elements were split.
+    std::size_t refine(std::vector<Candidate> candidates);
+    // The candidates from re-examining every link with the present radiosities.
+    std::vector<Candidate> relink();
+    // Jacobi iterations with push-pull until converged; false once cancelled.
+    bool iterate(bool resolved, const std::function<bool()>& carryOn);
+    // One Jacobi iteration: every element gathers through its links and the leaves add what
+    // their ancestors gathered (push), or, `resolved`, every leaf gathers through its terms; then
+    // the radiosities are pulled up the hierarchies. Returns the change in power.
+    double iteration(bool resolved);
+    // The leaves' coverage from the links of the leaves and their ancestors, and, `resolved`,
+    // their terms.
+    void resolveAtLeaves(bool resolved);
+    void gatherAtVertices(VertexSmoothing& smoothing);
+    // What a link brings to the gather site `at` from `source` (the link's source or one of its
+    // descendants).
+    Color gatherFrom(const Element& at, const Link& link, std::uint32_t source, std::uint64_t key,
+                     std::uint64_t& rayCount) const;
+    RadiosityStatistics statistics(std::size_t leaves) const;
+    bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+
+    const Scene& scene_;
+    RadiositySettings settings_;
+    float patchSize_ = 0;
+    float smallestEdge_ = 0;  // elements with edges below it are not split
+    RadiosityMesh mesh_;
+    FormFactor formFactor_;
+    std::uint64_t fingerprint_ = 0;
+    std::vector<std::uint32_t> roots_;
+    std::vector<std::uint32_t> parent_;
+    std::vector<std::array<Color, 2>> emitted_;     // pi Le
+    std::vector<std::array<Color, 2>> fromLights_;  // irradiance from the scene's lights
+    std::vector<float> lightSpread_;                // its spread over the element (W/m^2)
+    std::vector<std::array<Color, 2>> radiosity_;
+    std::vector<std::vector<Link>> links_;
+    std::vector<std::array<Color, 2>> gathered_;  // through the element's own links
+    // What each leaf gathers: every link of the leaf and of its ancestors, with the form factor
+    // from the leaf itself (its centroid, or three points of it for a source seen large), and
+    // those form factors added up per side.
+    struct LeafTerm {
+        std::uint32_t source;
+        Side receiverSide, sourceSide;
+        Color formFactor;  // visibility included
+    };
+    std::vector<std::vector<LeafTerm>> leafTerms_;
+    std::vector<std::array<float, 2>> coverage_;
+    double initialPower_ = 0;  // emitted, and reflected from the lights' light
+    double epsilon_ = 0;
+    double residual_ = 0;  // the last iteration's change in power
+    std::uint64_t rays_ = 0;
+    std::uint64_t iterations_ = 0;
+    const std::atomic<bool>* cancel_ = nullptr;
+};
+
+}  // namespace lancer

@@ -1,0 +1,244 @@
+// Hierarchical radiosity: furnaces (closed box and sphere, whose exact answer is known, checked
+// on the solution shown), energy balance, the leaves' form factors adding up to 1 in a closed
+// room, the refinement oracle's bound honoured, a light's shadow refined, independence from the
+// thread count, progress reports and cancellation.
+
+#include <gtest/gtest.h>
+#include <tbb/global_control.h>
+
+#include <atomic>
+#include <cmath>
+
+#include "RadiosityTestSupport.h"
+#include "radiosity/HierarchicalRadiosity.h"
+#include "radiosity/RadiositySolver.h"
+
+namespace lancer::test {
+namespace {
+
+// "glow" (loadScene's)
+constexpr float kAlbedo = 0.6f;
+constexpr float kEmission = 0.25f;
+
+const std::string kHierarchical = R"("method": "hierarchical", "threshold": 1e-4)";
+
+Scene furnaceBox() {
+    return loadScene(closedBox("glow"),
+                     R"(, "radiosity": {"patch_size": 0.5, )" + kHierarchical + "}");
+}
+
+TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
+    // Every point sees the rest of the closed box, whose radiosity is B = pi Le + rho E
+    // everywhere: E = pi Le / (1 - rho) on the inner side, which the solution shows (gathered at
+    // its vertices through the links) all over every wall, corners included.
+    Scene scene = furnaceBox();
+    HierarchicalRadiosity solver(scene);
+    const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
+    ASSERT_TRUE(solution);
+    const float expected = kPi * kEmission / (1 - kAlbedo);
+    // Points of each wall on a grid reaching to 0.01 of its edges, seen from inside.
+    const std::array<std::array<Vec3, 3>, 6> walls{{
+        {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, 1)},  // floor: origin, u, v
+        {Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1)},
+        {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)},
+        {Vec3(0, 0, 1), Vec3(1, 0, 0), Vec3(0, 1, 0)},
+        {Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+        {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+    }};
+    int points = 0;
+    float worst = 0;
+    for (const auto& [origin, u, v] : walls) {
+        const Vec3 n = cross(u, v);
+        const Vec3 inside = dot(n, Vec3(0.5f) - origin) > 0 ? n : -n;
+        for (float s : {0.01f, 0.1f, 0.3f, 0.5f, 0.77f, 0.99f})
+            for (float t : {0.01f, 0.2f, 0.45f, 0.63f, 0.9f, 0.99f}) {
+                const auto E = solution->irradiance(origin + s * u + t * v, n, inside);
+                ASSERT_TRUE(E);
+                worst = std::max(worst, std::abs(E->r - expected) / expected);
+                ++points;
+            }
+    }
+    EXPECT_EQ(points, 216);
+    EXPECT_LT(worst, 0.01f);
+}
+
+TEST(HierarchicalRadiosityTest, FormFactorsOfEveryLeafAddUpToOneInAClosedBox) {
+    // Each leaf gathers through its own links and its ancestors', with form factors from the leaf
+    // itself: in a closed room they cover its whole hemisphere once.
+    Scene scene = furnaceBox();
+    HierarchicalRadiosity solver(scene);
+    ASSERT_TRUE(solver.solve({}, nullptr));
+    const RadiosityMesh& mesh = solver.mesh();
+    std::size_t leaves = 0;
+    for (std::uint32_t leaf = 0; leaf < mesh.elements.size(); ++leaf) {
+        if (!mesh.elements[leaf].isLeaf()) continue;
+        ++leaves;
+        EXPECT_NEAR(solver.coverage(leaf, Side::Front), 1, 0.01) << "leaf " << leaf;
+        EXPECT_EQ(solver.coverage(leaf, Side::Back), 0) << "leaf " << leaf;
+    }
+    EXPECT_GT(leaves, 200u);  // refined beyond the 72 roots
+}
+
+TEST(HierarchicalRadiosityTest, EveryLinkLeftIsWithinTheOraclesBound) {
+    // The refinement stops where a link's error estimate is below the threshold, or where
+    // neither end may be split any more.
+    Scene scene = loadScene(
+        square(Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0)) + ", " +
+            square(Vec3(0, 0.3f, 0), Vec3(1, 0, 0), Vec3(0, 0, 1), "glow"),
+        R"(, "radiosity": {"patch_size": 1, "subdivision_levels": 3, )" + kHierarchical + "}");
+    HierarchicalRadiosity solver(scene);
+    ASSERT_TRUE(solver.solve({}, nullptr));
+    const RadiosityMesh& mesh = solver.mesh();
+    const float smallest = 0.5f / 8;  // element_size / 2^subdivision_levels
+    const auto unsplittable = [&](std::uint32_t e) {
+        const auto c = mesh.corners(mesh.elements[e]);
+        return std::max({length(c[1] - c[0]), length(c[2] - c[1]), length(c[0] - c[2])}) <=
+               smallest;
+    };
+    std::size_t links = 0, atTheBound = 0;
+    for (std::uint32_t r = 0; r < mesh.elements.size(); ++r)
+        for (const HierarchicalRadiosity::Link& link : solver.links()[r]) {
+            ++links;
+            if (unsplittable(r) && unsplittable(link.source)) {
+                ++atTheBound;
+                continue;
+            }
+            EXPECT_LE(solver.linkError(r, link), solver.refinementThreshold())
+                << "link " << link.source << " -> " << r;
+        }
+    EXPECT_GT(links, 8u);
+    EXPECT_LT(atTheBound, links);
+    // Two unit squares 0.3 apart: the links near the middle were refined.
+    EXPECT_GT(mesh.elements.size(), 4u + 16u);
+}
+
+TEST(HierarchicalRadiosityTest, EnergyBalanceInAClosedBox) {
+    Scene scene = furnaceBox();
+    HierarchicalRadiosity solver(scene);
+    const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
+    ASSERT_TRUE(solution);
+    double absorbed = 0;
+    for (const Element& e : solver.mesh().elements)
+        if (e.isLeaf()) absorbed += (1 - kAlbedo) * e.irradiance[0].average() * e.area;
+    const double emitted = kPi * kEmission * 6;
+    EXPECT_NEAR(absorbed, emitted, 5e-3 * emitted);
+}
+
+TEST(HierarchicalRadiosityTest, ClosedSphereFurnace) {
+    Scene scene = loadScene(R"({"type": "sphere", "center": [0.5, 0.5, 0.5], "radius": 1,
+                                "material": "glow"})",
+                            R"(, "radiosity": {"patch_size": 1, )" + kHierarchical + "}");
+    HierarchicalRadiosity solver(scene);
+    const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
+    ASSERT_TRUE(solution);
+    const float expected = kPi * kEmission / (1 - kAlbedo);
+    // Points all over the sphere, seen from inside.
+    for (int k = 0; k < 64; ++k) {
+        const float z = 1 - (2 * static_cast<float>(k) + 1) / 64, r = std::sqrt(1 - z * z);
+        const float phi = 2.4f * static_cast<float>(k);
+        const Vec3 n(r * std::cos(phi), r * std::sin(phi), z);
+        const auto E = solution->irradiance(Vec3(0.5f) + n, n, -n);
+        ASSERT_TRUE(E) << k;
+        EXPECT_NEAR(E->b, expected, 0.01f * expected) << k;
+    }
+}
+
+// A floor lit by a point light above it, with a small black square in between: a shadow.
+Scene shadowedFloor(int levels) {
+    return loadScene(square(Vec3(-2, 0, 2), Vec3(4, 0, 0), Vec3(0, 0, -4)) + ", " +
+                         square(Vec3(-0.3f, 1, 0.3f), Vec3(0.6f, 0, 0), Vec3(0, 0, -0.6f), "black"),
+                     R"(, "lights": [{"type": "point", "position": [0, 3, 0], "intensity": 10}],
+                         "radiosity": {"patch_size": 1, "subdivision_levels": )" +
+                         std::to_string(levels) + ", " + kHierarchical + "}");
+}
+
+TEST(HierarchicalRadiosityTest, TheLightsShadowIsRefined) {
+    Scene scene = shadowedFloor(4);
+    HierarchicalRadiosity solver(scene);
+    ASSERT_TRUE(solver.solve({}, nullptr));
+    // The smallest leaves lie along the shadow's edge (|x| or |z| about 0.45: the square's edge
+    // 0.3 projected from the light at height 3 onto the floor), none far from it.
+    float smallest = kInfinity;
+    for (const Element& e : solver.mesh().elements)
+        if (e.isLeaf()) smallest = std::min(smallest, e.area);
+    int nearTheEdge = 0;
+    for (const Element& e : solver.mesh().elements) {
+        if (!e.isLeaf() || e.area > 1.01f * smallest || std::abs(e.centroid.y) > 1e-3f) continue;
+        const float edge = std::max(std::abs(e.centroid.x), std::abs(e.centroid.z));
+        EXPECT_NEAR(edge, 0.45f, 0.2f) << e.centroid.x << " " << e.centroid.z;
+        ++nearTheEdge;
+    }
+    EXPECT_GT(nearTheEdge, 8);
+    EXPECT_GT(solver.mesh().elements.size(), 32u * 10);  // from 32 roots
+}
+
+TEST(HierarchicalRadiosityTest, TheLightsShadowIsDarkAndTheRestLit) {
+    Scene scene = shadowedFloor(4);
+    HierarchicalRadiosity solver(scene);
+    const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
+    ASSERT_TRUE(solution);
+    const Vec3 up(0, 1, 0);
+    // Lit: I cos(theta) / d^2 from the light at (0, 3, 0) (nothing else reflects onto the floor).
+    const Vec3 lit(1.2f, 0, 1.2f);
+    const float d = length(Vec3(0, 3, 0) - lit);
+    const auto E = solution->irradiance(lit, up, up);
+    ASSERT_TRUE(E);
+    EXPECT_NEAR(E->r, 10 * (3 / d) / (d * d), 0.01f * E->r);
+    // Under the black square, the umbra: nothing.
+    const auto dark = solution->irradiance(Vec3(0.1f, 0, -0.1f), up, up);
+    ASSERT_TRUE(dark);
+    EXPECT_LT(dark->r, 1e-3f * E->r);
+}
+
+std::vector<float> solveWithThreads(int threads) {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                              static_cast<std::size_t>(threads));
+    Scene scene = shadowedFloor(3);
+    HierarchicalRadiosity solver(scene);
+    const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
+    std::vector<float> values;
+    for (const Element& e : solver.mesh().elements)
+        for (const Color& c : e.irradiance)
+            values.push_back(c.g);
+    for (float x = -1.9f; x < 2; x += 0.1f) {
+        const auto E = solution->irradiance(Vec3(x, 0, 0.37f), Vec3(0, 1, 0), Vec3(0, 1, 0));
+        values.push_back(E ? E->g : -1);
+    }
+    return values;
+}
+
+TEST(HierarchicalRadiosityTest, SameSolutionWhateverTheThreadCount) {
+    EXPECT_TRUE(solveWithThreads(1) == solveWithThreads(2));
+}
+
+TEST(HierarchicalRadiosityTest, ProgressReportsAndCancellation) {
+    Scene scene = furnaceBox();
+    HierarchicalRadiosity solver(scene);
+    std::atomic<bool> cancel{false};
+    int reports = 0;
+    bool sawIterating = false;
+    const std::optional<RadiositySolution> solution = solver.solve(
+        [&](const RadiosityProgress& p) {
+            ++reports;
+            if (p.phase == RadiosityProgress::Phase::Iterating) {
+                sawIterating = true;
+                EXPECT_GT(solver.snapshot().faceCount(), 0u);
+                cancel = true;
+            }
+        },
+        &cancel);
+    EXPECT_FALSE(solution);
+    EXPECT_TRUE(sawIterating);
+    EXPECT_GE(reports, 2);
+}
+
+TEST(HierarchicalRadiosityTest, AnotherFingerprintThanProgressive) {
+    Scene hierarchical = furnaceBox();
+    Scene progressive =
+        loadScene(closedBox("glow"), R"(, "radiosity": {"patch_size": 0.5, "threshold": 1e-4})");
+    EXPECT_NE(HierarchicalRadiosity(hierarchical).fingerprint(),
+              RadiositySolver(progressive).fingerprint());
+}
+
+}  // namespace
+}  // namespace lancer::test
