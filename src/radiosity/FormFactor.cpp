@@ -62,6 +62,23 @@ double FormFactor::pointToSideOfTriangle(const Vec3d& p, const Vec3d& n,
     return pointToTriangle(p, n, triangle);
 }
 
+double FormFactor::pointToSideOfTriangleApprox(const Vec3d& p, const Vec3d& n,
+                                               const std::array<Vec3, 3>& triangle,
+                                               const Vec3& triangleNormal, Side triangleSide,
+                                               double area, double longestEdgeSquared) {
+    const Vec3d centroid = (Vec3d(triangle[0]) + Vec3d(triangle[1]) + Vec3d(triangle[2])) / 3.0;
+    const Vec3d towards = centroid - p;
+    const double d2 = dot(towards, towards);
+    if (!(d2 > kFarField * kFarField * longestEdgeSquared))
+        return pointToSideOfTriangle(p, n, triangle, triangleNormal, triangleSide);
+    const double height = dot(Vec3d(triangleNormal), p - Vec3d(triangle[0]));
+    if (triangleSide == Side::Front ? !(height > 0) : !(height < 0)) return 0;
+    const double cosP = dot(n, towards);
+    if (!(cosP > 0)) return 0;
+    // cos(theta_t) d = |height| to the plane, cos(theta_p) d = n . towards.
+    return area * cosP * std::abs(height) / (std::numbers::pi * d2 * d2);
+}
+
 Color FormFactor::elementToTriangle(const Element& receiver, Side receiverSide,
                                     const std::array<Vec3, 3>& triangle, const Patch& shooter,
                                     Side shooterSide, int rays, std::uint64_t seed,

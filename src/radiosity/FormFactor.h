@@ -33,6 +33,17 @@ public:
                                         const std::array<Vec3, 3>& triangle,
                                         const Vec3& triangleNormal, Side triangleSide);
 
+    // Either of the above where the triangle is near p, and where it is far (beyond
+    // kFarField times its longest edge, whose square is given) the differential-area
+    // approximation A cos(theta_p) cos(theta_t) / (pi d^2) to its centroid: a few percent off at
+    // that distance (about (r / d)^2 for a disc of radius r seen head-on), and without the exact
+    // formula's arctangents.
+    static constexpr double kFarField = 2;
+    static double pointToSideOfTriangleApprox(const Vec3d& p, const Vec3d& n,
+                                              const std::array<Vec3, 3>& triangle,
+                                              const Vec3& triangleNormal, Side triangleSide,
+                                              double area, double longestEdgeSquared);
+
     // F from the side `receiverSide` of the element to the side `shooterSide` of a triangle of the
     // patch (one of its elements, or the patch's own corners), visibility included (per colour
     // channel, through transmissive surfaces) from `rays` rays to points of the triangle that

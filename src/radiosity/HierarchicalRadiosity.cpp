@@ -38,11 +38,20 @@ constexpr double kNearField = 0.02;
 // below (where it hardly varies over the leaf).
 constexpr double kLeafNearField = 1e-3;
 
+// A source sending at least this fraction of the power put in (a lamp) has its links' visibility
+// traced with four times the rays, and again at every vertex in the final gather, even where its
+// link's rays all got through (a shadow may cross a large link between the rays).
+constexpr double kBrightSource = 1e-2;
+
 // Jacobi iterations and refinement passes stop at these, whatever the tolerances.
 constexpr int kMaxRefinementPasses = 12;
 
 float longestEdge(const std::array<Vec3, 3>& t) {
     return std::max({length(t[1] - t[0]), length(t[2] - t[1]), length(t[0] - t[2])});
+}
+
+double square(float x) {
+    return static_cast<double>(x) * x;
 }
 
 // The three points of a triangle where its form factors and light are evaluated: the
@@ -174,6 +183,10 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
     if (height == 0 || !std::isfinite(height)) return d;
     const Side sourceSide = height > 0 ? Side::Front : Side::Back;
     const std::array<Vec3, 3> points = quadraturePoints(receiverCorners);
+    const double sourceEdge2 = square(longestEdge(sourceCorners));
+    // Links from strong sources (the lamps) trace more rays: their shadows are what shows.
+    const bool brightSource = radiosity_[c.source][sideIndex(sourceSide)].average() * source.area >=
+                              kBrightSource * initialPower_;
     const std::uint32_t choice = splitChoice(c.receiver, c.source);
     const double reflected = static_cast<double>(receiver.reflectance.average()) *
                              radiosity_[c.source][sideIndex(sourceSide)].average();
@@ -189,8 +202,9 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
         const Vec3 n = side == Side::Front ? receiver.normal : -receiver.normal;
         double sum = 0, least = kInfinity, most = 0;
         for (std::size_t k = 0; k < probes.size(); ++k) {
-            const double F = FormFactor::pointToSideOfTriangle(
-                Vec3d(probes[k]), Vec3d(n), sourceCorners, source.normal, sourceSide);
+            const double F = FormFactor::pointToSideOfTriangleApprox(
+                Vec3d(probes[k]), Vec3d(n), sourceCorners, source.normal, sourceSide, source.area,
+                sourceEdge2);
             if (k < 3) sum += F;
             least = std::min(least, F);
             most = std::max(most, F);
@@ -210,7 +224,8 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
         }
         link.visibility = formFactor_.areaVisibility(
             receiver, receiverCorners, mesh_.patches[receiver.patch].curved, side, sourceCorners,
-            sourcePatch, sourceSide, settings_.visibilityRays,
+            sourcePatch, sourceSide,
+            brightSource ? 4 * settings_.visibilityRays : settings_.visibilityRays,
             hashValues(c.receiver, c.source, sideIndex(side)), rayCount);
         if (choice != Element::kNone && linkError(c.receiver, link) > epsilon_) {
             d.split = choice;
@@ -315,9 +330,10 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
                 const Element& source = mesh_.elements[link.source];
                 const std::array<Vec3, 3> corners = mesh_.corners(source);
                 const Vec3d n(link.receiverSide == Side::Front ? element.normal : -element.normal);
+                const double edge2 = square(longestEdge(corners));
                 const auto F = [&](const Vec3& p) {
-                    return FormFactor::pointToSideOfTriangle(Vec3d(p), n, corners, source.normal,
-                                                             link.sourceSide);
+                    return FormFactor::pointToSideOfTriangleApprox(
+                        Vec3d(p), n, corners, source.normal, link.sourceSide, source.area, edge2);
                 };
                 // The centroid's form factor, or the three points' mean where the source is seen
                 // large enough for it to vary over the leaf.
@@ -412,8 +428,9 @@ Color HierarchicalRadiosity::gatherFrom(const Element& at, const Link& link, std
     const Element& element = mesh_.elements[source];
     const std::array<Vec3, 3> corners = mesh_.corners(element);
     const Vec3 n = link.receiverSide == Side::Front ? at.normal : -at.normal;
-    const double unoccluded = FormFactor::pointToSideOfTriangle(
-        Vec3d(at.centroid), Vec3d(n), corners, element.normal, link.sourceSide);
+    const double unoccluded = FormFactor::pointToSideOfTriangleApprox(
+        Vec3d(at.centroid), Vec3d(n), corners, element.normal, link.sourceSide, element.area,
+        square(longestEdge(corners)));
     if (!(unoccluded > 0)) return Color(0);
     // A source seen large is gathered from its children: its radiosity varies over it (darker
     // towards the corners), which its average would not show.
@@ -424,8 +441,12 @@ Color HierarchicalRadiosity::gatherFrom(const Element& at, const Link& link, std
         return sum;
     }
     const Color& B = radiosity_[source][sideIndex(link.sourceSide)];
-    if (!link.partlyVisible()) return static_cast<float>(unoccluded) * link.visibility * B;
-    const bool strong = B.average() * element.area >= kStrongLink * initialPower_;
+    // The link's own visibility stands for the weak sources' (a few rays may all have got
+    // through a large link that a shadow crosses: the strong sources' shadows are traced again).
+    const double power = B.average() * element.area;
+    const bool strong = power >= kStrongLink * initialPower_;
+    if (power < kBrightSource * initialPower_ && !link.partlyVisible())
+        return static_cast<float>(unoccluded) * link.visibility * B;
     return B * formFactor_.elementToTriangle(
                    at, link.receiverSide, corners, mesh_.patches[element.patch], link.sourceSide,
                    strong ? settings_.visibilityRays : 1, hashValues(key, source), rayCount);
