@@ -43,6 +43,13 @@ constexpr double kLeafNearField = 1e-3;
 // link's rays all got through (a shadow may cross a large link between the rays).
 constexpr double kBrightSource = 1e-2;
 
+// Memory bounds (a link takes 32 bytes, a leaf term 20): once the hierarchy holds this many
+// elements or links, nothing more is split; the last round resolved at the leaves is skipped
+// beyond this many terms.
+constexpr std::size_t kMostElements = std::size_t{1} << 23;
+constexpr std::size_t kMostLinks = std::size_t{1} << 25;
+constexpr std::size_t kMostLeafTerms = std::size_t{1} << 26;
+
 // Jacobi iterations and refinement passes stop at these, whatever the tolerances.
 constexpr int kMaxRefinementPasses = 12;
 
@@ -116,7 +123,7 @@ std::uint32_t HierarchicalRadiosity::split(std::uint32_t element) {
 }
 
 bool HierarchicalRadiosity::splittable(std::uint32_t element) const {
-    return longestEdge(mesh_.corners(mesh_.elements[element])) > smallestEdge_;
+    return !full_ && longestEdge(mesh_.corners(mesh_.elements[element])) > smallestEdge_;
 }
 
 std::uint32_t HierarchicalRadiosity::splitChoice(std::uint32_t receiver,
@@ -241,6 +248,7 @@ std::size_t HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
     std::size_t splits = 0;
     std::size_t prepared = mesh_.elements.size();
     while (!candidates.empty() && !cancelled()) {
+        checkSize(4 * candidates.size());  // as many as splitting them all would make
         std::vector<Decision> decisions(candidates.size());
         rays_ += parallelForCounting(candidates.size(), 64, cancel_,
                                      [&](std::size_t i, std::uint64_t& rays) {
@@ -269,6 +277,7 @@ std::size_t HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
     }
     // The lights' shadows and highlights: leaves whose light varies too much are split.
     for (bool again = true; again && !cancelled();) {
+        checkSize(0);
         const std::size_t before = mesh_.elements.size();
         for (std::uint32_t e = 0; e < before; ++e) {
             const Element& element = mesh_.elements[e];
@@ -286,7 +295,13 @@ std::size_t HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
     return splits;
 }
 
+void HierarchicalRadiosity::checkSize(std::size_t candidates) {
+    // Each candidate may become a link (or two, one per side).
+    full_ = mesh_.elements.size() >= kMostElements || linkCount() + 2 * candidates >= kMostLinks;
+}
+
 std::vector<HierarchicalRadiosity::Candidate> HierarchicalRadiosity::relink() {
+    checkSize(0);
     std::vector<Candidate> candidates;
     for (std::uint32_t r = 0; r < links_.size(); ++r) {
         std::vector<Link>& kept = links_[r];
@@ -536,9 +551,16 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
         if (candidates.empty()) break;
     }
 
-    // The leaves' radiosities once more, from their own form factors to the links' sources.
-    resolveAtLeaves(true);
-    if (!iterate(true, carryOn)) return std::nullopt;
+    // The leaves' radiosities once more, from their own form factors to the links' sources
+    // (unless the terms would take too much memory).
+    std::size_t terms = 0;
+    for (std::uint32_t leaf : mesh_.leaves())
+        for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e])
+            terms += links_[e].size();
+    if (terms <= kMostLeafTerms) {
+        resolveAtLeaves(true);
+        if (!iterate(true, carryOn)) return std::nullopt;
+    }
 
     phase = RadiosityProgress::Phase::Gathering;
     if (!carryOn()) return std::nullopt;

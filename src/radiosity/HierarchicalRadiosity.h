@@ -106,6 +106,9 @@ private:
     // Splits an element (unless it is already split) and returns its first child.
     std::uint32_t split(std::uint32_t element);
     bool splittable(std::uint32_t element) const;
+    // Whether the hierarchy, with `candidates` more links, reaches its memory bounds (then nothing
+    // more is split).
+    void checkSize(std::size_t candidates);
     // Which end of the pair to split (the larger of the splittable ones), or kNone.
     std::uint32_t splitChoice(std::uint32_t receiver, std::uint32_t source) const;
     // Places the elements from `first` on (surface point, reflectance) and computes the light
@@ -159,6 +162,7 @@ private:
     };
     std::vector<std::vector<LeafTerm>> leafTerms_;
     std::vector<std::array<float, 2>> coverage_;
+    bool full_ = false;        // checkSize's verdict
     double initialPower_ = 0;  // emitted, and reflected from the lights' light
     double epsilon_ = 0;
     double residual_ = 0;  // the last iteration's change in power
