@@ -192,10 +192,35 @@ TEST(RadiosityRender, SavedSolutionGivesTheSameImages) {
     EXPECT_EQ(readFile(files.folder / "c.pfm"), readFile(files.folder / "d.pfm"));
 }
 
+TEST(RadiosityRender, HierarchicalSolutionIsSavedLoadedAndRefusedForAnotherMethod) {
+    json scene = smallScene();
+    scene["radiosity"]["method"] = "hierarchical";
+    const SolutionFiles files(scene);
+    const RunResult solved = runLancer(
+        {"scene.json", "-o", "a.pfm", "--save-radiosity", "solution.rad"}, files.folder.path());
+    ASSERT_EQ(solved.exitStatus, 0) << solved;
+    const RunResult loaded = runLancer(
+        {"scene.json", "-o", "b.pfm", "--load-radiosity", "solution.rad"}, files.folder.path());
+    ASSERT_EQ(loaded.exitStatus, 0) << loaded;
+    EXPECT_EQ(readFile(files.folder / "a.pfm"), readFile(files.folder / "b.pfm"));
+    // The same scene solved progressively is another solution.
+    files.folder.write("progressive.json", smallScene().dump());
+    const RunResult refused =
+        runLancer({"progressive.json", "-o", "c.pfm", "--load-radiosity", "solution.rad"},
+                  files.folder.path());
+    EXPECT_EQ(refused.exitStatus, kBadInput) << refused;
+    EXPECT_NE(refused.standardError.find("solved for another scene"), std::string::npos) << refused;
+    EXPECT_FALSE(fs::exists(files.folder / "c.pfm"));
+}
+
 TEST(RadiosityRender, SameImageWhateverTheThreadCount) {
     // --threads bounds the solve's workers as well as the render's.
     EXPECT_EQ(renderScene(smallScene(), {"--threads", "1"}).bytes,
               renderScene(smallScene(), {"--threads", "2"}).bytes);
+    json hierarchical = smallScene();
+    hierarchical["radiosity"]["method"] = "hierarchical";
+    EXPECT_EQ(renderScene(hierarchical, {"--threads", "1"}).bytes,
+              renderScene(hierarchical, {"--threads", "2"}).bytes);
 }
 
 struct LoadErrorCase {
