@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <bit>
-#include <chrono>
 #include <cmath>
 
 #include "radiosity/LightIrradiance.h"
 #include "radiosity/PatchMesher.h"
+#include "radiosity/RadiosityReporter.h"
 #include "radiosity/SurfaceProbe.h"
 #include "radiosity/VertexSmoothing.h"
 #include "sampling/Sampling.h"
@@ -500,22 +500,11 @@ RadiosityStatistics HierarchicalRadiosity::statistics(std::size_t leaves) const 
 std::optional<RadiositySolution> HierarchicalRadiosity::solve(
     const std::function<void(const RadiosityProgress&)>& onProgress,
     const std::atomic<bool>* cancel) {
-    const auto start = std::chrono::steady_clock::now();
     cancel_ = cancel;
-    RadiosityProgress progress;
+    const RadiosityReporter reporter(onProgress, cancel);
     RadiosityProgress::Phase phase = RadiosityProgress::Phase::Refining;
     const auto carryOn = [&]() {
-        if (cancelled()) return false;
-        if (onProgress) {
-            progress.phase = phase;
-            progress.shots = iterations_;
-            progress.unshotPower = residual_;
-            progress.initialPower = initialPower_;
-            progress.seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            onProgress(progress);
-        }
-        return !cancelled();
+        return reporter.carryOn(phase, iterations_, residual_, initialPower_);
     };
 
     grow();
@@ -568,7 +557,7 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
     gatherAtVertices(smoothing);
     if (cancelled()) return std::nullopt;
     RadiosityStatistics s = statistics(mesh_.leaves().size());
-    s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    s.seconds = reporter.seconds();
     return std::move(smoothing).solution(mesh_.lookupDistance(patchSize_), fingerprint_, s);
 }
 

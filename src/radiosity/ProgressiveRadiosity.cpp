@@ -1,12 +1,12 @@
 #include "radiosity/ProgressiveRadiosity.h"
 
 #include <atomic>
-#include <chrono>
 #include <cmath>
 
 #include "lights/Light.h"
 #include "radiosity/LightIrradiance.h"
 #include "radiosity/PatchMesher.h"
+#include "radiosity/RadiosityReporter.h"
 #include "radiosity/SurfaceProbe.h"
 #include "radiosity/VertexSmoothing.h"
 #include "sampling/StratifiedPoint.h"
@@ -217,22 +217,10 @@ RadiositySolution ProgressiveRadiosity::solve() {
 std::optional<RadiositySolution> ProgressiveRadiosity::solve(
     const std::function<void(const RadiosityProgress&)>& onProgress,
     const std::atomic<bool>* cancel) {
-    const auto start = std::chrono::steady_clock::now();
     cancel_ = cancel;
-    RadiosityProgress progress;
-    // Reports where the solve is; false once it is cancelled.
+    const RadiosityReporter reporter(onProgress, cancel);
     const auto carryOn = [&](RadiosityProgress::Phase phase) {
-        if (cancelled()) return false;
-        if (onProgress) {
-            progress.phase = phase;
-            progress.shots = shots_;
-            progress.unshotPower = unshotHistory_.back();
-            progress.initialPower = initialPower_;
-            progress.seconds =
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            onProgress(progress);
-        }
-        return !cancelled();
+        return reporter.carryOn(phase, shots_, unshotHistory_.back(), initialPower_);
     };
 
     for (Patch& p : mesh_.patches)
@@ -291,8 +279,7 @@ std::optional<RadiositySolution> ProgressiveRadiosity::solve(
     statistics.initialPower = initial;
     statistics.residualPower = unshotHistory_.back();
     statistics.rays = rays_;
-    statistics.seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    statistics.seconds = reporter.seconds();
     return std::move(smoothing).solution(mesh_.lookupDistance(patchSize_), fingerprint_,
                                          statistics);
 }
