@@ -145,11 +145,11 @@ void HierarchicalRadiosity::prepareElements(std::size_t first) {
         fromLights_[e] = {};
         lightSpread_[e] = 0;
         if (scene_.lights().empty()) return;
+        const std::array<Vec3, 3> points = quadraturePoints(corners);
         for (Side side : kBothSides) {
             const Vec3 n = side == Side::Front ? element.normal : -element.normal;
             float least = kInfinity, most = 0;
             Color sum;
-            const std::array<Vec3, 3> points = quadraturePoints(corners);
             for (std::size_t k = 0; k < 3; ++k) {
                 Vec3 p = points[k], ng = element.normal;
                 if (patch.curved)
@@ -244,8 +244,7 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
     return d;
 }
 
-std::size_t HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
-    std::size_t splits = 0;
+void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
     std::size_t prepared = mesh_.elements.size();
     while (!candidates.empty() && !cancelled()) {
         checkSize(4 * candidates.size());  // as many as splitting them all would make
@@ -265,7 +264,6 @@ std::size_t HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
                     links_[c.receiver].push_back(d.links[static_cast<std::size_t>(k)]);
                 continue;
             }
-            if (mesh_.elements[d.split].isLeaf()) ++splits;
             const std::uint32_t first = split(d.split);
             for (std::uint32_t child = first; child < first + 4; ++child)
                 next.push_back(d.split == c.receiver ? Candidate{child, c.source}
@@ -282,17 +280,15 @@ std::size_t HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
         for (std::uint32_t e = 0; e < before; ++e) {
             const Element& element = mesh_.elements[e];
             if (!element.isLeaf() || !splittable(e)) continue;
+            // Weighted by the element's area (unlike the links' error): the bound the links use,
+            // applied to radiosity, splits shadowed floors into far too many leaves (issue 12).
             const double error =
                 static_cast<double>(element.reflectance.average()) * lightSpread_[e] * element.area;
-            if (error > epsilon_) {
-                split(e);
-                ++splits;
-            }
+            if (error > epsilon_) split(e);
         }
         prepareElements(before);
         again = mesh_.elements.size() > before;
     }
-    return splits;
 }
 
 void HierarchicalRadiosity::checkSize(std::size_t candidates) {

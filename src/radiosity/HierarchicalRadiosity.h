@@ -29,8 +29,8 @@ class VertexSmoothing;
 //     exact point-to-polygon formula averaged over three points of the receiver, its visibility the
 //     fraction of `visibility_rays` rays from points of the receiver to points of the source that
 //     get through;
-//  3. elements whose light from the scene's lights (point, spot, area...) varies by more than the
-//     same tolerance across them are split too;
+//  3. elements whose light from the scene's lights (point, spot, area...) varies across them are
+//     split too, where reflectance x that variation x their area exceeds the same threshold;
 //  4. Jacobi iterations: each element gathers the radiosity of its links' sources, each leaf adds
 //     what its ancestors gathered (push), and the radiosities are averaged back up (pull), until
 //     the power still to come (extrapolated from the last two iterations) is below `threshold`
@@ -116,8 +116,8 @@ private:
     void prepareElements(std::size_t first);
     Decision decide(const Candidate& candidate, std::uint64_t& rayCount) const;
     // Refines the candidates, and the candidates their splits make, into links; then splits the
-    // leaves whose light varies too much. Returns how many elements were split.
-    std::size_t refine(std::vector<Candidate> candidates);
+    // leaves whose light varies too much.
+    void refine(std::vector<Candidate> candidates);
     // The candidates from re-examining every link with the present radiosities.
     std::vector<Candidate> relink();
     // Jacobi iterations with push-pull until converged; false once cancelled.
