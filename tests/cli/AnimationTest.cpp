@@ -111,7 +111,7 @@ TEST(CliAnimation, AnInterruptedAnimationResumesBitForBit) {
     const TempFolder folder;
     folder.write("scene.json", animatedWhittedScene().dump());
     const std::vector<std::string> render = {"scene.json", "-o",  "out.pfm", "--width", "240",
-                                             "--height",   "180", "--spp",   "24",      "--quiet"};
+                                             "--height",   "180", "--spp",   "12",      "--quiet"};
     const RunResult whole = runLancer(render, folder.path());
     ASSERT_EQ(whole.exitStatus, 0) << whole;
     std::vector<std::string> frames;
