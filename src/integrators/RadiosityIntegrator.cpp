@@ -3,21 +3,29 @@
 #include <bit>
 #include <cmath>
 
+#include "geometry/Shape.h"
 #include "integrators/IntegratorRegistry.h"
 #include "lights/Light.h"
 #include "materials/Bsdf.h"
+#include "materials/Material.h"
 #include "radiosity/LightIrradiance.h"
 #include "radiosity/RadiositySolver.h"
 #include "sampling/Sampler.h"
 #include "sampling/Sampling.h"
+#include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
 #include "scene/ShadowRays.h"
 
 namespace lancer {
 
 RadiosityIntegrator::RadiosityIntegrator(const Scene& scene, int maxDepth,
-                                         std::shared_ptr<const RadiositySolution> solution)
-    : WhittedIntegrator(scene, maxDepth), solution_(std::move(solution)) {}
+                                         std::shared_ptr<const RadiositySolution> solution,
+                                         int finalGather)
+    : WhittedIntegrator(scene, maxDepth),
+      solution_(std::move(solution)),
+      finalGather_(finalGather) {
+    if (finalGather_ > 0) emitters_.emplace(scene);
+}
 
 std::unique_ptr<Integrator> RadiosityIntegrator::create(const Scene& scene,
                                                         const IntegratorSetup& setup) {
@@ -27,7 +35,8 @@ std::unique_ptr<Integrator> RadiosityIntegrator::create(const Scene& scene,
     if (!solution) return nullptr;
     return std::make_unique<RadiosityIntegrator>(
         scene, scene.settings().maxDepth,
-        std::make_shared<const RadiositySolution>(std::move(*solution)));
+        std::make_shared<const RadiositySolution>(std::move(*solution)),
+        scene.settings().radiosity.finalGather);
 }
 
 Color RadiosityIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
@@ -37,19 +46,94 @@ Color RadiosityIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const 
     Color L;
     const Color kd = bsdf.diffuseReflectance();
     if (!kd.isBlack()) {
-        std::optional<Color> E = solution_->irradiance(hit.p, hit.ng, wo);
-        if (!E) {
-            // Stratified light samples, placed by this sample's own numbers.
-            constexpr int kLightSamples = 16;
-            const Vec2 u = sampler.get2D();
-            E = LightIrradiance::at(
-                scene(), hit.p, hit.ng, n, kLightSamples,
-                hashValues(std::bit_cast<std::uint32_t>(u.x), std::bit_cast<std::uint32_t>(u.y)),
-                rayCount);
-        }
-        L += kd * *E / kPi;
+        const Color E = finalGather_ > 0 ? gatheredIrradiance(hit, n, front ? hit.ng : -hit.ng,
+                                                              sampler, rayCount)
+                                         : solutionIrradiance(hit, n, wo, sampler, rayCount);
+        L += kd * E / kPi;
     }
     if (bsdf.hasGlossyLobe()) L += highlights(hit, bsdf, n, wo, sampler, rayCount);
+    return L;
+}
+
+Color RadiosityIntegrator::solutionIrradiance(const Hit& hit, const Vec3& n, const Vec3& wo,
+                                              Sampler& sampler, std::uint64_t& rayCount) const {
+    if (const std::optional<Color> E = solution_->irradiance(hit.p, hit.ng, wo)) return *E;
+    // Stratified light samples, placed by this sample's own numbers.
+    constexpr int kLightSamples = 16;
+    const Vec2 u = sampler.get2D();
+    return LightIrradiance::at(
+        scene(), hit.p, hit.ng, n, kLightSamples,
+        hashValues(std::bit_cast<std::uint32_t>(u.x), std::bit_cast<std::uint32_t>(u.y)), rayCount);
+}
+
+namespace {
+
+// The seed of a stratified pattern, shifted by `offset` (both from the sampler): every point of
+// the pattern is then uniform over the square, and the pattern differs at every hit.
+std::uint64_t patternSeed(const Vec2& offset) {
+    return hashValues(std::bit_cast<std::uint32_t>(offset.x),
+                      std::bit_cast<std::uint32_t>(offset.y));
+}
+
+}  // namespace
+
+Color RadiosityIntegrator::gatheredIrradiance(const Hit& hit, const Vec3& n, const Vec3& ng,
+                                              Sampler& sampler, std::uint64_t& rayCount) const {
+    Vec3 a, b;
+    coordinateSystem(n, a, b);
+    const Vec2 offset = sampler.get2D();
+    const std::uint64_t seed = patternSeed(offset);
+    Color sum;
+    for (int k = 0; k < finalGather_; ++k) {
+        const Vec3 local =
+            sampleCosineHemisphere(shifted(stratifiedPoint(k, finalGather_, seed), offset));
+        const Vec3 wi = local.x * a + local.y * b + local.z * n;
+        // A direction under the geometric surface (the shading normal leans) sees nothing.
+        if (dot(wi, ng) <= 0) continue;
+        sum += gatherRadiance(hit.spawnRay(wi), sampler, rayCount);
+    }
+    // Cosine-distributed directions: E = pi x the mean radiance.
+    return emittersIrradiance(hit, n, sampler, rayCount) +
+           sum * (kPi / static_cast<float>(finalGather_));
+}
+
+Color RadiosityIntegrator::emittersIrradiance(const Hit& hit, const Vec3& n, Sampler& sampler,
+                                              std::uint64_t& rayCount) const {
+    const Vec2 offset = sampler.get2D();
+    const std::uint64_t seed = patternSeed(offset);
+    Color sum;
+    for (int k = 0; k < finalGather_; ++k) {
+        // The light picked independently of the point's cell, so that each light's points are
+        // still uniform over it.
+        const auto choice =
+            emitters_->choose(static_cast<float>(hashValues(seed, k, 1) >> 40) * 0x1p-24f);
+        if (!choice) break;
+        const LightSample ls =
+            choice->light->sample(hit.p, shifted(stratifiedPoint(k, finalGather_, seed), offset));
+        const float cosTheta = dot(n, ls.wi);
+        if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
+        sum += cosTheta * ls.irradiance * ShadowRays::transmittance(scene(), hit, ls, rayCount) /
+               choice->probability;
+    }
+    return sum / static_cast<float>(finalGather_);
+}
+
+Color RadiosityIntegrator::gatherRadiance(const Ray& ray, Sampler& sampler,
+                                          std::uint64_t& rayCount) const {
+    ++rayCount;
+    const std::optional<Hit> found = scene().intersect(ray, kInfinity);
+    // The environment is one of the emitters sampled; a plain background lights nothing.
+    if (!found) return Color(0);
+    const Hit& hit = *found;
+    const Vec3 wo = -ray.direction;
+    const bool front = hit.frontFace(ray);
+    Color L;
+    if (!emitters_->lightAt(hit) && (front || hit.shape->emitsOnBothSides()))
+        L += hit.material->emission(hit);
+    const Bsdf bsdf(*hit.material, hit, wo, Bsdf::Weights::AsGiven);
+    const Color kd = bsdf.diffuseReflectance();
+    if (!kd.isBlack())
+        L += kd * solutionIrradiance(hit, bsdf.shadingNormal(front), wo, sampler, rayCount) / kPi;
     return L;
 }
 

@@ -709,7 +709,7 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
     checkKeys(
         node, "\"radiosity\"",
         {"method", "patch_size", "element_size", "threshold", "max_shots", "subdivision_levels",
-         "subdivision_tolerance", "visibility_rays", "refinement_tolerance"});
+         "subdivision_tolerance", "visibility_rays", "refinement_tolerance", "final_gather"});
     RadiositySettings& r = scene_.settings().radiosity;
     if (node.has("method"))
         r.method =
@@ -735,6 +735,11 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
         r.visibilityRays = readInt(node["visibility_rays"], 1);
         if (r.visibilityRays > 1024)
             fail(node["visibility_rays"], "\"visibility_rays\" must be at most 1024");
+    }
+    if (node.has("final_gather")) {
+        r.finalGather = readInt(node["final_gather"], 0);
+        if (r.finalGather > 4096)
+            fail(node["final_gather"], "\"final_gather\" must be at most 4096");
     }
 }
 

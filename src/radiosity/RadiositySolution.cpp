@@ -79,8 +79,10 @@ std::optional<Color> RadiositySolution::irradiance(const Vec3& p, const Vec3& ng
     });
     if (!best) return std::nullopt;
     const auto& f = faces_[*best];
-    const Vec3 n = cross(f[1] - f[0], f[2] - f[0]);
-    const std::size_t side = dot(n, towardsViewer) >= 0 ? 0 : 1;
+    // The side is the true surface's (ng): seen at a grazing angle, a curved surface's viewer may
+    // be on the other side of the flat element under it.
+    const bool elementFacesAsNg = dot(cross(f[1] - f[0], f[2] - f[0]), ng) >= 0;
+    const std::size_t side = (dot(ng, towardsViewer) >= 0) == elementFacesAsNg ? 0 : 1;
     const auto& v = faceVertices_[*best];
     return bestAt.b0 * vertexIrradiance_[v[0]][side] + bestAt.b1 * vertexIrradiance_[v[1]][side] +
            bestAt.b2 * vertexIrradiance_[v[2]][side];

@@ -15,10 +15,13 @@ struct RadiositySettings {
     int maxShots = 100000;              // a bound on the shots, whatever the threshold
     int subdivisionLevels = 2;          // how many times an element may be split in four
     float subdivisionTolerance = 0.1f;  // relative jump in irradiance that makes an element split
-    int visibilityRays = 4;
+    int visibilityRays = 4;             // rays per form factor, to points on the shooter
     // Hierarchical: a link whose reflected radiosity may be wrong by more than this fraction of
     // the mean radiosity put in is refined.
-    float refinementTolerance = 0.02f;             // rays per form factor, to points on the shooter
+    float refinementTolerance = 0.02f;
+    // The render, not the solution: rays gathering the solution at each eye ray's diffuse hit
+    // (0: the solution interpolated there).
+    int finalGather = 0;
 };
 
 }  // namespace lancer

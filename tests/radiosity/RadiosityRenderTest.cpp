@@ -57,6 +57,17 @@ TEST(RadiosityRender, ClosedBoxFurnace) {
                   0.2 / (1 - 0.5));
 }
 
+// The final gather from inside an emissive sphere: sampling the sphere by area from a point of
+// it, and gathering the uniform solution, are both exact, so the furnace holds pixel by pixel.
+TEST(RadiosityRender, ClosedSphereFurnaceWithAFinalGather) {
+    json scene = sceneWith(
+        R"({"type": "sphere", "center": [0.5, 0.5, 0.5], "radius": 1, "material": "glow"})",
+        R"({"diffuse": 0.7, "emission": 0.3})");
+    scene["radiosity"]["patch_size"] = 1;
+    scene["radiosity"]["final_gather"] = 8;
+    expectFurnace(renderScene(scene).image, 0.3 / (1 - 0.7));
+}
+
 TEST(RadiosityRender, ClosedCsgCavityFurnace) {
     // A sphere carved out of a box, seen from inside: the sphere's patches are the cavity's,
     // facing in. (Where two carving children meet, the patches along the seam converge slowly
@@ -153,6 +164,13 @@ struct SolutionFiles {
 
     explicit SolutionFiles(const json& content)
         : scene(folder.write("scene.json", content.dump())) {}
+
+    // Renders the scene to a.pfm, saving its solution as solution.rad.
+    RunResult saveSolution() const {
+        return runLancer(
+            {"scene.json", "-o", "a.pfm", "--quiet", "--save-radiosity", "solution.rad"},
+            folder.path());
+    }
 };
 
 json smallScene() {
@@ -190,6 +208,25 @@ TEST(RadiosityRender, SavedSolutionGivesTheSameImages) {
                   files.folder.path());
     ASSERT_EQ(reused.exitStatus, 0) << reused;
     EXPECT_EQ(readFile(files.folder / "c.pfm"), readFile(files.folder / "d.pfm"));
+}
+
+// The final gather is part of the render, not of the solution: a solution saved without it is
+// taken by the same scene with it, and gives the image that solving again does.
+TEST(RadiosityRender, SavedSolutionServesAFinalGather) {
+    const SolutionFiles files(smallScene());
+    ASSERT_EQ(files.saveSolution().exitStatus, 0);
+    json gathered = smallScene();
+    gathered["radiosity"]["final_gather"] = 4;
+    files.folder.write("gathered.json", gathered.dump());
+    const RunResult solved =
+        runLancer({"gathered.json", "-o", "b.pfm", "--quiet"}, files.folder.path());
+    ASSERT_EQ(solved.exitStatus, 0) << solved;
+    const RunResult loaded =
+        runLancer({"gathered.json", "-o", "c.pfm", "--quiet", "--load-radiosity", "solution.rad"},
+                  files.folder.path());
+    ASSERT_EQ(loaded.exitStatus, 0) << loaded;
+    EXPECT_EQ(readFile(files.folder / "b.pfm"), readFile(files.folder / "c.pfm"));
+    EXPECT_NE(readFile(files.folder / "a.pfm"), readFile(files.folder / "b.pfm"));
 }
 
 TEST(RadiosityRender, HierarchicalSolutionIsSavedLoadedAndRefusedForAnotherMethod) {
@@ -234,11 +271,7 @@ class RadiosityLoadError : public testing::TestWithParam<LoadErrorCase> {};
 
 TEST_P(RadiosityLoadError, ExitsWithStatus2AndOneLine) {
     const SolutionFiles files(smallScene());
-    ASSERT_EQ(
-        runLancer({"scene.json", "-o", "a.pfm", "--quiet", "--save-radiosity", "solution.rad"},
-                  files.folder.path())
-            .exitStatus,
-        0);
+    ASSERT_EQ(files.saveSolution().exitStatus, 0);
     json scene = smallScene();
     std::string bytes = readFile(files.folder / "solution.rad");
     GetParam().spoil(scene, bytes);
@@ -332,7 +365,9 @@ INSTANTIATE_TEST_SUITE_P(
         KeyErrorCase{"FractionalShots", R"({"max_shots": 2.5})", 28, "whole number"},
         KeyErrorCase{"NoRefinementTolerance", R"({"refinement_tolerance": 0})", 39,
                      "greater than 0"},
-        KeyErrorCase{"UnknownMethod", R"({"method": "hierarchal"})", 25, "radiosity method"}),
+        KeyErrorCase{"UnknownMethod", R"({"method": "hierarchal"})", 25, "radiosity method"},
+        KeyErrorCase{"NegativeFinalGather", R"({"final_gather": -1})", 31, "at least 0"},
+        KeyErrorCase{"TooLargeAFinalGather", R"({"final_gather": 5000})", 31, "at most 4096"}),
     CaseName{});
 
 }  // namespace
