@@ -239,7 +239,8 @@ void printStatistics(const Scene& scene, const RenderCounters& counters) {
         std::fprintf(
             stderr, "stats: meshes and their BVHs: %.2f MB, %.1f bytes per stored triangle\n",
             megabytes, static_cast<double>(s.meshBytes) / static_cast<double>(s.uniqueTriangles));
-    std::fprintf(stderr, "stats: scene loaded in %.3f s\n", s.loadSeconds);
+    std::fprintf(stderr, "stats: scene loaded in %.3f s (%.3f s of it building BVHs)\n",
+                 s.loadSeconds, s.buildSeconds);
     std::fprintf(stderr, "stats: %llu rays, %llu samples, %llu of them NaN or infinite (dropped)\n",
                  static_cast<unsigned long long>(counters.rays),
                  static_cast<unsigned long long>(counters.samples),

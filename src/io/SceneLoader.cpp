@@ -62,6 +62,10 @@ std::string inQuotes(const std::string& s) {
     return "\"" + s + "\"";
 }
 
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 // What a JSON value is, in words, for "expected ..., got ..." messages.
 std::string describe(const nlohmann::json& v) {
     if (v.is_null()) return "null";
@@ -554,9 +558,10 @@ Scene SceneLoader::Reader::load() {
         loadContents(fragment);
     checkAnimatedNames();
     warnOfLightsFacingAway();
+    const auto buildStart = std::chrono::steady_clock::now();
     scene_.buildAccelerationStructure();
-    scene_.statistics().loadSeconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    scene_.statistics().buildSeconds += secondsSince(buildStart);
+    scene_.statistics().loadSeconds = secondsSince(start);
     return std::move(scene_);
 }
 
@@ -1096,7 +1101,9 @@ std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
         std::shared_ptr<TriangleMesh> triangles = read(path);
         scene_.addSourceFile(path);
         if (smooth) SmoothingByAngle::apply(*triangles, *smooth);
+        const auto buildStart = std::chrono::steady_clock::now();
         auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
+        scene_.statistics().buildSeconds += secondsSince(buildStart);
         meshes_[key] = mesh;
         scene_.statistics().uniqueTriangles += mesh->triangles().triangleCount();
         scene_.statistics().meshBytes += mesh->memoryBytes();

@@ -32,6 +32,7 @@ public:
         std::size_t instancedTriangles = 0;  // drawn: each model counted once per instance
         std::size_t meshBytes = 0;           // the models' vertex, index and BVH arrays
         double loadSeconds = 0;              // reading files and building BVHs
+        double buildSeconds = 0;             // of which building BVHs (models' and the scene's)
     };
 
     Scene();

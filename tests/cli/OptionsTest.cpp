@@ -5,6 +5,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <utility>
 
 #include "LancerRun.h"
@@ -204,6 +205,27 @@ TEST(CliSummary, CountsThreadsInWords) {
         ASSERT_EQ(run.exitStatus, 0) << run;
         EXPECT_NE(run.standardError.find(words), std::string::npos) << run.standardError;
     }
+}
+
+// --stats gives the load's time and, within it, the BVHs' build (the model's and the scene's).
+TEST(CliStats, TheLoadTimeSaysHowMuchOfItWasTheBvhBuild) {
+    const TempFolder folder;
+    json scene = loadWhittedScene();
+    scene["objects"].push_back(
+        {{"type", "mesh"},
+         {"file", (fs::path(LANCER_SOURCE_DIR) / "scenes/models/stanford_bunny_lowres/bunny.obj")
+                      .string()}});
+    folder.write("scene.json", scene.dump());
+    const RunResult run = runLancer(
+        {"scene.json", "-o", "out.pfm", "--width", "16", "--height", "12", "--spp", "1", "--stats"},
+        folder.path());
+    ASSERT_EQ(run.exitStatus, 0) << run;
+    std::smatch times;
+    ASSERT_TRUE(std::regex_search(
+        run.standardError, times,
+        std::regex(R"(stats: scene loaded in ([0-9.]+) s \(([0-9.]+) s of it building BVHs\))")))
+        << run.standardError;
+    EXPECT_LE(std::stod(times[2]), std::stod(times[1]));
 }
 
 }  // namespace
