@@ -36,10 +36,14 @@ std::vector<Point2> projectPolygon(std::span<const Vec3> corners) {
 
 }  // namespace
 
-std::vector<PolygonTriangulator::CornerTriple> PolygonTriangulator::triangulate(
-    std::span<const Vec3> corners) {
+void PolygonTriangulator::triangulate(std::span<const Vec3> corners,
+                                      std::vector<CornerTriple>& triangles) {
     const std::size_t n = corners.size();
-    if (n == 3) return {{0, 1, 2}};
+    triangles.clear();
+    if (n == 3) {
+        triangles.push_back({0, 1, 2});
+        return;
+    }
     const std::vector<Point2> p = projectPolygon(corners);
     std::vector<std::size_t> prev(n), next(n);
     for (std::size_t i = 0; i < n; ++i) {
@@ -58,7 +62,6 @@ std::vector<PolygonTriangulator::CornerTriple> PolygonTriangulator::triangulate(
         }
         return true;
     };
-    std::vector<CornerTriple> triangles;
     triangles.reserve(n - 2);
     std::size_t remaining = n, corner = 0, failures = 0;
     while (remaining > 3) {
@@ -77,7 +80,6 @@ std::vector<PolygonTriangulator::CornerTriple> PolygonTriangulator::triangulate(
         corner = c;
     }
     triangles.push_back({prev[corner], corner, next[corner]});
-    return triangles;
 }
 
 }  // namespace lancer

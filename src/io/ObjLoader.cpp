@@ -222,7 +222,8 @@ public:
           normalCount_(obj.attrib.normals.size() / 3),
           uvCount_(obj.attrib.texcoords.size() / 2),
           materials_(loadTexture, warnings),
-          mesh_(std::make_shared<TriangleMesh>()) {}
+          mesh_(std::make_shared<TriangleMesh>()),
+          firstVertexAt_(positionCount_, kNoVertex) {}
 
     // A face of `count` corners, with an index into the OBJ's materials (-1: none).
     void addFace(const tinyobj::index_t* corners, std::size_t count, int material) {
@@ -248,17 +249,17 @@ public:
         }
         facesWithBadNormals_ += badNormal;
         facesWithBadUvs_ += badUv;
-        std::vector<CornerTriple> triangles = PolygonTriangulator::triangulate(facePositions_);
-        std::erase_if(triangles, [&](const CornerTriple& t) {
+        PolygonTriangulator::triangulate(facePositions_, faceTriangles_);
+        std::erase_if(faceTriangles_, [&](const CornerTriple& t) {
             const Vec3& p0 = facePositions_[t[0]];
             const bool zeroArea =
                 !(length(cross(facePositions_[t[1]] - p0, facePositions_[t[2]] - p0)) > 0);
             zeroAreaTriangles_ += zeroArea;
             return zeroArea;
         });
-        if (triangles.empty()) return;
+        if (faceTriangles_.empty()) return;
         const std::uint32_t slot = materialSlot(material);
-        for (const CornerTriple& triangle : triangles) {
+        for (const CornerTriple& triangle : faceTriangles_) {
             for (const std::size_t corner : triangle)
                 mesh_->indices.push_back(vertex(faceKeys_[corner]));
             mesh_->faceMaterials.push_back(slot);
@@ -312,10 +313,22 @@ private:
         return -1;
     }
 
+    // The vertex of a corner: the one made for the first corner with its position, normal and
+    // uv, or a new one. Most models give a position one normal and one uv, so the vertex first
+    // made for the position is looked at before the hash map, which then holds only the others.
     std::uint32_t vertex(const CornerKey& key) {
-        const auto [found, isNew] =
-            vertices_.try_emplace(key, std::uint32_t(mesh_->positions.size()));
-        if (!isNew) return found->second;
+        const auto position = std::size_t(key.position);
+        std::uint32_t& first = firstVertexAt_[position];
+        if (first == kNoVertex) return first = newVertex(key);
+        const CornerKey& firstKey = vertexKeys_[first];
+        if (firstKey.normal == key.normal && firstKey.uv == key.uv) return first;
+        const auto [found, isNew] = vertices_.try_emplace(key, 0);
+        if (isNew) found->second = newVertex(key);
+        return found->second;
+    }
+
+    std::uint32_t newVertex(const CornerKey& key) {
+        vertexKeys_.push_back(key);
         mesh_->positions.push_back(positionAt(key.position));
         Vec3 normal;
         if (key.normal >= 0) {
@@ -333,7 +346,7 @@ private:
             hasUvs_ = true;
         }
         mesh_->uvs.push_back(uv);
-        return found->second;
+        return std::uint32_t(mesh_->positions.size() - 1);
     }
 
     // Materials are converted when a face first uses them, so that unused ones load no texture.
@@ -356,7 +369,10 @@ private:
     const std::size_t positionCount_, normalCount_, uvCount_;
     MtlMaterialConverter materials_;
     std::shared_ptr<TriangleMesh> mesh_;
-    std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertices_;
+    static constexpr std::uint32_t kNoVertex = ~std::uint32_t{0};
+    std::vector<std::uint32_t> firstVertexAt_;  // per position: its first vertex, or kNoVertex
+    std::vector<CornerKey> vertexKeys_;         // per vertex: the corner it was made for
+    std::unordered_map<CornerKey, std::uint32_t, CornerKeyHash> vertices_;  // the others
     std::map<int, std::uint32_t> slots_;  // OBJ material index (-1: the default) -> mesh's
     bool hasNormals_ = false, hasUvs_ = false, pointsOrLines_ = false;
     std::size_t faces_ = 0, shortFaces_ = 0, facesWithBadPositions_ = 0,
@@ -364,6 +380,7 @@ private:
                 zeroAreaTriangles_ = 0;
     std::vector<CornerKey> faceKeys_;  // of the face being added
     std::vector<Vec3> facePositions_;
+    std::vector<CornerTriple> faceTriangles_;
 };
 
 }  // namespace

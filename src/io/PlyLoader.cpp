@@ -345,8 +345,8 @@ public:
     // A face split as the OBJ loader splits its faces (concave ones right), less zero-area
     // triangles; facePositions_ holds its corners.
     void addTriangles(const aiFace& face, std::uint32_t first) {
-        for (const PolygonTriangulator::CornerTriple& t :
-             PolygonTriangulator::triangulate(facePositions_)) {
+        PolygonTriangulator::triangulate(facePositions_, faceTriangles_);
+        for (const PolygonTriangulator::CornerTriple& t : faceTriangles_) {
             const Vec3& p0 = facePositions_[t[0]];
             if (!(length(cross(facePositions_[t[1]] - p0, facePositions_[t[2]] - p0)) > 0)) {
                 ++zeroArea_;
@@ -381,7 +381,8 @@ private:
     std::shared_ptr<TriangleMesh> mesh_;
     bool hasNormals_ = false, hasUvs_ = false, hasColours_ = false;
     std::size_t pointsAndLines_ = 0, nonFinite_ = 0, zeroArea_ = 0;
-    std::vector<Vec3> facePositions_;  // of the face being added
+    std::vector<Vec3> facePositions_;                               // of the face being added
+    std::vector<PolygonTriangulator::CornerTriple> faceTriangles_;  // and its triangles
 };
 
 }  // namespace
