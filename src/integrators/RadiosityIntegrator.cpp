@@ -21,7 +21,7 @@ namespace lancer {
 RadiosityIntegrator::RadiosityIntegrator(const Scene& scene, int maxDepth,
                                          std::shared_ptr<const RadiositySolution> solution,
                                          int finalGather)
-    : WhittedIntegrator(scene, maxDepth),
+    : WhittedIntegrator(scene, maxDepth, GlossyLobes::Traced),
       solution_(std::move(solution)),
       finalGather_(finalGather) {
     if (finalGather_ > 0) emitters_.emplace(scene);
@@ -51,7 +51,7 @@ Color RadiosityIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const 
                                          : solutionIrradiance(hit, n, wo, sampler, rayCount);
         L += kd * E / kPi;
     }
-    if (bsdf.hasGlossyLobe()) L += highlights(hit, bsdf, n, wo, sampler, rayCount);
+    if (bsdf.hasGlossyLobe()) L += highlights(hit, bsdf, n, wo, rayCount);
     return L;
 }
 
@@ -138,23 +138,17 @@ Color RadiosityIntegrator::gatherRadiance(const Ray& ray, Sampler& sampler,
 }
 
 Color RadiosityIntegrator::highlights(const Hit& hit, const Bsdf& bsdf, const Vec3& n,
-                                      const Vec3& wo, Sampler& sampler,
-                                      std::uint64_t& rayCount) const {
+                                      const Vec3& wo, std::uint64_t& rayCount) const {
+    // Only point-like lights: the glossy and rough lobes' traced rays find everything else.
     Color L;
     for (const auto& light : scene().lights()) {
-        const int count = light->isDelta() ? 1 : light->shadowSamples();
-        Color sum;
-        for (int k = 0; k < count; ++k) {
-            const Vec2 u = light->isDelta() ? Vec2(0.5f, 0.5f) : sampler.get2D();
-            const LightSample ls = light->sample(hit.p, u);
-            const float cosTheta = dot(n, ls.wi);
-            if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
-            const Color f = bsdf.glossyF(wo, ls.wi, light->isDelta());
-            if (f.isBlack()) continue;
-            sum += cosTheta * f * ls.irradiance *
-                   ShadowRays::transmittance(scene(), hit, ls, rayCount);
-        }
-        L += sum / static_cast<float>(count);
+        if (!light->isDelta()) continue;
+        const LightSample ls = light->sample(hit.p, Vec2(0.5f, 0.5f));
+        const float cosTheta = dot(n, ls.wi);
+        if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
+        const Color f = bsdf.glossyF(wo, ls.wi, true);
+        if (f.isBlack()) continue;
+        L += cosTheta * f * ls.irradiance * ShadowRays::transmittance(scene(), hit, ls, rayCount);
     }
     return L;
 }

@@ -12,11 +12,13 @@ namespace lancer {
 // The second pass of radiosity: eye rays traced as in Whitted (emission seen directly, mirror
 // reflection and refraction followed), but at a diffuse surface the light it reflects comes from
 // the radiosity solution, interpolated smoothly over the element under the hit: the diffuse
-// lobes' albedo / pi times the irradiance. Lights add only their highlights (the physical f of
-// the lobes neither diffuse nor delta, such as the normalized Blinn-Phong lobe): their diffuse
-// light is in the solution already, and there is no ambient term, so no light is counted twice.
-// Where the solution has no element (a plane beyond the clipped part), the diffuse light is the
-// lights' direct light alone.
+// lobes' albedo / pi times the irradiance. The glossy lobes (the normalized Blinn-Phong lobe)
+// reflect what one direction per pixel sample drawn from each finds, traced as the rough lobes'
+// are: the solution on the surfaces it meets, emitters, area lights, mirrors, the environment.
+// Point-like lights, which no ray meets, add their highlights through the lobes' f. The lights'
+// diffuse light is in the solution already, and there is no ambient term, so no light is
+// counted twice. Where the solution has no element (a plane beyond the clipped part), the
+// diffuse light is the lights' direct light alone.
 // With a final gather of N rays (the classic two-pass method), the irradiance at an eye ray's
 // diffuse hit is not interpolated but computed there: N samples of the emitters (lights and
 // emissive surfaces, as the path tracer picks them) with shadow rays, plus what N
@@ -35,8 +37,9 @@ protected:
                        Sampler& sampler, std::uint64_t& rayCount) const override;
 
 private:
+    // The glossy and rough lobes' highlights of the point-like lights.
     Color highlights(const Hit& hit, const Bsdf& bsdf, const Vec3& n, const Vec3& wo,
-                     Sampler& sampler, std::uint64_t& rayCount) const;
+                     std::uint64_t& rayCount) const;
     // The irradiance on the side n faces (towards wo) from the solution, or from the lights alone
     // where it has no element.
     Color solutionIrradiance(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,

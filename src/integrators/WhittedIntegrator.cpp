@@ -15,8 +15,8 @@
 
 namespace lancer {
 
-WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth)
-    : scene_(scene), maxDepth_(maxDepth) {}
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, GlossyLobes glossyLobes)
+    : scene_(scene), maxDepth_(maxDepth), glossyLobes_(glossyLobes) {}
 
 std::unique_ptr<Integrator> WhittedIntegrator::create(const Scene& scene, const IntegratorSetup&) {
     return std::make_unique<WhittedIntegrator>(scene, scene.settings().maxDepth);
@@ -67,20 +67,25 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
 
     if (depth >= maxDepth_) return L;
 
+    const auto traceFurther = [&](const SpecularRay& r) {
+        return r.weight * trace({hit.spawnRay(r.direction), distance, path.footprint}, depth + 1,
+                                sampler, rayCount);
+    };
     std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
     const std::size_t count = bsdf.specularRays(wo, front, rays);
     for (std::size_t i = 0; i < count; ++i)
-        L += rays[i].weight * trace({hit.spawnRay(rays[i].direction), distance, path.footprint},
-                                    depth + 1, sampler, rayCount);
+        L += traceFurther(rays[i]);
     // Distribution ray tracing: one microfacet normal per rough lobe and pixel sample.
     for (std::size_t lobe = 0; lobe < bsdf.roughLobeCount(); ++lobe) {
         std::array<SpecularRay, 2> traced;
         const std::size_t tracedCount = bsdf.tracedRays(lobe, wo, sampler.get2D(), traced);
         for (std::size_t i = 0; i < tracedCount; ++i)
-            L += traced[i].weight *
-                 trace({hit.spawnRay(traced[i].direction), distance, path.footprint}, depth + 1,
-                       sampler, rayCount);
+            L += traceFurther(traced[i]);
     }
+    if (glossyLobes_ == GlossyLobes::Traced)
+        for (std::size_t lobe = 0; lobe < bsdf.glossyLobeCount(); ++lobe)
+            if (const std::optional<SpecularRay> r = bsdf.glossyRay(lobe, wo, sampler.get2D()))
+                L += traceFurther(*r);
     return L;
 }
 

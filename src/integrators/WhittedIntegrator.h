@@ -14,11 +14,18 @@ struct Hit;
 // Whitted ray tracing with the scene format's shading equation, from the BSDF's lobes: emission,
 // ambient, the lobes' local responses to the lights with shadow rays, and the delta lobes'
 // recursive reflection and refraction (weights split by the Fresnel term for transmissive
-// materials) up to maxDepth bounces. Subclasses may replace the local shading (ambient and
-// direct lighting) and keep the rest (radiosity does).
+// materials) up to maxDepth bounces, and the rough lobes' traced rays. Subclasses may replace the
+// local shading (ambient and direct lighting) and keep the rest (radiosity does, and also traces
+// the glossy lobes).
 class WhittedIntegrator : public Integrator {
 public:
-    WhittedIntegrator(const Scene& scene, int maxDepth);
+    // How the glossy lobes (Blinn-Phong's specular) reflect light: lit by the lights alone (the
+    // scene format's equation), or also along one direction per pixel sample drawn from each
+    // lobe and traced, as the rough lobes are, which then finds everything the lobe reflects.
+    enum class GlossyLobes { LitByLights, Traced };
+
+    WhittedIntegrator(const Scene& scene, int maxDepth,
+                      GlossyLobes glossyLobes = GlossyLobes::LitByLights);
     static std::unique_ptr<Integrator> create(const Scene& scene, const IntegratorSetup& setup);
 
     Color radiance(const Ray& ray, const RayCone& footprint, Sampler& sampler,
@@ -48,6 +55,7 @@ private:
 
     const Scene& scene_;
     int maxDepth_;
+    GlossyLobes glossyLobes_;
 };
 
 }  // namespace lancer

@@ -123,6 +123,15 @@ std::size_t Bsdf::tracedRays(std::size_t index, const Vec3& wo, const Vec2& u,
     return count;
 }
 
+std::optional<SpecularRay> Bsdf::glossyRay(std::size_t index, const Vec3& wo, const Vec2& u) const {
+    const Vec3 woLocal = frame_.toLocal(wo);
+    const std::optional<BsdfSample> s = glossyLobes_[index]->sample(woLocal, 0, u);
+    if (!s) return std::nullopt;
+    const Vec3 wi = normalize(frame_.toWorld(s->wi));
+    if (!sidesAgree(woLocal, s->wi, reflectsGeometrically(wo, wi))) return std::nullopt;
+    return SpecularRay{wi, s->f * (std::abs(s->wi.z) / s->pdf)};
+}
+
 std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
                                std::array<SpecularRay, kMaxSpecularRays>& rays) const {
     if (deltaCount_ == 0) return 0;

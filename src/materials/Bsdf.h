@@ -26,7 +26,8 @@ struct Hit;
 //
 // Whitted and radiosity shade with the scene format's equation instead, from the same lobes with
 // their weights as given: the lobes' local responses lit by the lights, the delta lobes' light
-// traced along specular rays, and (radiosity) the diffuse lobes' albedo and the other lobes' f.
+// traced along specular rays, and (radiosity) the diffuse lobes' albedo, the other lobes' f for
+// point-like lights, and the glossy and rough lobes' traced rays for the rest.
 //
 // Directions are in world space, unit length and point away from the surface. The lobes live in
 // the frame of the shading normal (turned to the front side); light that would cross the
@@ -88,6 +89,13 @@ public:
     // those that would cross the geometric surface the wrong way. Returns how many were written.
     std::size_t tracedRays(std::size_t index, const Vec3& wo, const Vec2& u,
                            std::array<SpecularRay, 2>& rays) const;
+    // The glossy lobes (neither diffuse, delta nor rough), which radiosity traces with one
+    // direction per pixel sample.
+    std::size_t glossyLobeCount() const { return glossyCount_; }
+    // A direction drawn from the glossy lobe `index` with u, as the path tracer samples it, with
+    // the weight f cos / pdf of its radiance; none where the lobe gives nothing or the direction
+    // would cross the geometric surface the wrong way.
+    std::optional<SpecularRay> glossyRay(std::size_t index, const Vec3& wo, const Vec2& u) const;
     // The albedo of the ideal diffuse lobes (f = albedo / pi), which radiosity handles.
     const Color& diffuseReflectance() const { return diffuseWeight_; }
     // Whether some lobe is neither diffuse nor delta (highlights).
