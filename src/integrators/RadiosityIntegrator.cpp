@@ -90,7 +90,7 @@ Color RadiosityIntegrator::gatheredIrradiance(const Hit& hit, const Vec3& n, con
         const Vec3 wi = local.x * a + local.y * b + local.z * n;
         // A direction under the geometric surface (the shading normal leans) sees nothing.
         if (dot(wi, ng) <= 0) continue;
-        sum += gatherRadiance(hit.spawnRay(wi), sampler, rayCount);
+        sum += gatherRadiance(hit.spawnRay(wi), 0, sampler, rayCount);
     }
     // Cosine-distributed directions: E = pi x the mean radiance.
     return emittersIrradiance(hit, n, sampler, rayCount) +
@@ -118,22 +118,34 @@ Color RadiosityIntegrator::emittersIrradiance(const Hit& hit, const Vec3& n, Sam
     return sum / static_cast<float>(finalGather_);
 }
 
-Color RadiosityIntegrator::gatherRadiance(const Ray& ray, Sampler& sampler,
+Color RadiosityIntegrator::gatherRadiance(const Ray& ray, int glossyBounces, Sampler& sampler,
                                           std::uint64_t& rayCount) const {
     ++rayCount;
     const std::optional<Hit> found = scene().intersect(ray, kInfinity);
-    // The environment is one of the emitters sampled; a plain background lights nothing.
-    if (!found) return Color(0);
+    // A gather ray's emitters are sampled from the gathering point; a glossy reflection's are not.
+    const bool emittersSampled = glossyBounces == 0;
+    // A plain background lights nothing (it is not in the solution either).
+    if (!found)
+        return emittersSampled || !scene().environment() ? Color(0)
+                                                         : scene().background(ray.direction);
     const Hit& hit = *found;
     const Vec3 wo = -ray.direction;
     const bool front = hit.frontFace(ray);
     Color L;
-    if (!emitters_->lightAt(hit) && (front || hit.shape->emitsOnBothSides()))
+    if ((!emittersSampled || !emitters_->lightAt(hit)) && (front || hit.shape->emitsOnBothSides()))
         L += hit.material->emission(hit);
     const Bsdf bsdf(*hit.material, hit, wo, Bsdf::Weights::AsGiven);
     const Color kd = bsdf.diffuseReflectance();
     if (!kd.isBlack())
         L += kd * solutionIrradiance(hit, bsdf.shadingNormal(front), wo, sampler, rayCount) / kPi;
+    // The solution carries no glossy reflection: a glossy surface's is followed along one
+    // direction drawn from each lobe, so that what a glossy floor reflects of the lamps and the
+    // room reaches the diffuse surfaces gathering it.
+    if (glossyBounces < kGlossyBouncesGathered)
+        for (std::size_t lobe = 0; lobe < bsdf.glossyLobeCount(); ++lobe)
+            if (const std::optional<SpecularRay> r = bsdf.glossyRay(lobe, wo, sampler.get2D()))
+                L += r->weight * gatherRadiance(hit.spawnRay(r->direction), glossyBounces + 1,
+                                                sampler, rayCount);
     return L;
 }
 

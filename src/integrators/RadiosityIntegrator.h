@@ -51,9 +51,14 @@ private:
     // The emitters' part of it.
     Color emittersIrradiance(const Hit& hit, const Vec3& n, Sampler& sampler,
                              std::uint64_t& rayCount) const;
-    // The light the first surface along `ray` reflects back, from the solution, and the emission
-    // of an emitter that emittersIrradiance does not sample.
-    Color gatherRadiance(const Ray& ray, Sampler& sampler, std::uint64_t& rayCount) const;
+    // The light the first surface along `ray` sends back: its diffuse reflection from the
+    // solution, what its glossy lobes reflect (followed up to kGlossyBouncesGathered times), and
+    // its emission, but that of an emitter emittersIrradiance samples when the ray is a gather
+    // ray (glossyBounces 0).
+    Color gatherRadiance(const Ray& ray, int glossyBounces, Sampler& sampler,
+                         std::uint64_t& rayCount) const;
+
+    static constexpr int kGlossyBouncesGathered = 2;
 
     std::shared_ptr<const RadiositySolution> solution_;
     int finalGather_;
