@@ -58,7 +58,7 @@ constexpr int kDoneWords = 5;
 
 // Waiting for a message sleeps between polls, from kFirstPause up to kLongestPause: MPI's
 // blocking calls spin, and would take a core from the renderer's threads.
-constexpr auto kFirstPause = std::chrono::microseconds(20);
+constexpr auto kFirstPause = std::chrono::microseconds(200);
 constexpr auto kLongestPause = std::chrono::microseconds(1000);
 // After a stop is asked for, how long the leader waits for the workers' last tiles: a worker
 // killed outright never sends them.
@@ -154,6 +154,8 @@ public:
         }
     }
 
+    // Sends a finished tile without waiting for the leader to take it: a blocking send spun in
+    // MPI's progress loop until the leader's server thread woke (6.5% of a worker's time).
     void send(const FinishedTile& done) {
         std::vector<float> floats = tilePixels(done);
         std::vector<unsigned char> bytes(sizeof(std::uint64_t) + floats.size() * sizeof(float));
@@ -161,17 +163,23 @@ public:
         std::memcpy(bytes.data(), &index, sizeof index);
         std::memcpy(bytes.data() + sizeof index, floats.data(), floats.size() * sizeof(float));
         std::lock_guard lock(mutex_);
-        MPI_Send(bytes.data(), static_cast<int>(bytes.size()), MPI_BYTE, 0, kTileFinished,
-                 MPI_COMM_WORLD);
+        forgetSentTiles();
+        TileInFlight& tile = inFlight_.emplace_back(TileInFlight{std::move(bytes), {}});
+        MPI_Isend(tile.bytes.data(), static_cast<int>(tile.bytes.size()), MPI_BYTE, 0,
+                  kTileFinished, MPI_COMM_WORLD, &tile.request);
     }
 
     void sendDone(const RenderResult& result) {
         std::lock_guard lock(mutex_);
-        // An answer still on its way is taken, so that no message is left unread.
+        // An answer still on its way is taken, so that no message is left unread, and every tile
+        // is sent before the message that says there are no more.
         while (asked_) {
             receiveAnswer();
             if (asked_) std::this_thread::sleep_for(kFirstPause);
         }
+        for (TileInFlight& tile : inFlight_)
+            waitFor(tile.request);
+        inFlight_.clear();
         const RenderCounters& c = result.counters;
         const std::uint64_t words[kDoneWords] = {c.rays, c.samples, c.pixels, c.nonFiniteSamples,
                                                  static_cast<std::uint64_t>(result.threads)};
@@ -184,6 +192,16 @@ private:
         answer_.assign(static_cast<std::size_t>(batch_), 0);
         MPI_Irecv(answer_.data(), batch_, MPI_INT64_T, 0, kTilesGiven, MPI_COMM_WORLD, &request_);
         asked_ = true;
+    }
+
+    // Drops the tiles the leader has taken, oldest first.
+    void forgetSentTiles() {
+        while (!inFlight_.empty()) {
+            int sent = 0;
+            MPI_Test(&inFlight_.front().request, &sent, MPI_STATUS_IGNORE);
+            if (!sent) return;
+            inFlight_.pop_front();
+        }
     }
 
     void receiveAnswer() {
@@ -201,11 +219,18 @@ private:
             given_.push_back(static_cast<std::size_t>(answer_[static_cast<std::size_t>(i)]));
     }
 
+    // A finished tile being sent: its bytes stay until the send completes.
+    struct TileInFlight {
+        std::vector<unsigned char> bytes;
+        MPI_Request request;
+    };
+
     const int threads_;
     int batch_;  // the tiles asked for at once
     const std::atomic<bool>* cancel_;
     std::mutex mutex_;
     std::deque<std::size_t> given_;
+    std::deque<TileInFlight> inFlight_;
     std::vector<std::int64_t> answer_;
     MPI_Request request_ = MPI_REQUEST_NULL;
     bool asked_ = false;
