@@ -9,26 +9,6 @@ namespace lancer {
 
 namespace {
 
-// The map scaled by `intensity`, with a border: a column on each side wrapped around from the
-// other side, and the first and last rows repeated above and below.
-std::vector<Color> borderedTexels(const Image& map, float intensity) {
-    const int w = map.width(), h = map.height();
-    std::vector<Color> texels;
-    texels.reserve(static_cast<std::size_t>(w + 2) * static_cast<std::size_t>(h + 2));
-    for (int y = -1; y <= h; ++y)
-        for (int x = -1; x <= w; ++x)
-            texels.push_back(map.at((x + w) % w, std::clamp(y, 0, h - 1)) * intensity);
-    return texels;
-}
-
-std::vector<float> luminancesOf(const std::vector<Color>& texels) {
-    std::vector<float> luminances;
-    luminances.reserve(texels.size());
-    for (const Color& c : texels)
-        luminances.push_back(c.luminance());
-    return luminances;
-}
-
 float rowSinTheta(int y, int h) {
     return std::sin(kPi * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
 }
@@ -73,13 +53,27 @@ std::unique_ptr<EnvironmentLight> EnvironmentLight::create(const Parameters& par
     return std::make_unique<EnvironmentLight>(std::move(map), intensity, rotate);
 }
 
+// The map scaled by `intensity`, with a border: a column on each side wrapped around from the
+// other side, and the first and last rows repeated above and below.
+std::vector<EnvironmentLight::Texel> EnvironmentLight::borderedTexels(const Image& map,
+                                                                      float intensity) {
+    const int w = map.width(), h = map.height();
+    std::vector<Texel> texels;
+    texels.reserve(static_cast<std::size_t>(w + 2) * static_cast<std::size_t>(h + 2));
+    for (int y = -1; y <= h; ++y)
+        for (int x = -1; x <= w; ++x) {
+            const Color radiance = map.at((x + w) % w, std::clamp(y, 0, h - 1)) * intensity;
+            texels.push_back({radiance, radiance.luminance()});
+        }
+    return texels;
+}
+
 EnvironmentLight::EnvironmentLight(Image map, float intensity, float rotateDegrees)
     : width_(map.width()),
       height_(map.height()),
       cosRotate_(std::cos(radians(rotateDegrees))),
       sinRotate_(std::sin(radians(rotateDegrees))),
       texels_(borderedTexels(map, intensity)),
-      luminances_(luminancesOf(texels_)),
       distribution_(cellWeights(), width_, height_) {
     // Each texel's cell subtends (2 pi / w) (pi / h) sin(theta) steradians.
     for (int y = 0; y < height_; ++y) {

@@ -18,8 +18,9 @@ namespace lancer {
 // times sin(theta), the Jacobian of the mapping: a texel's cell through a Distribution2D (by the
 // cell's average luminance), then a point in the cell in proportion to the bilinear luminance.
 // The texels are kept with a border (a column wrapped around on each side, the pole rows
-// repeated), so that a lookup reads its four texels without wrapping or clamping, and with their
-// luminances, which a sample reads nine of around its cell.
+// repeated), so that a lookup reads its four texels without wrapping or clamping, and each with
+// its luminance, which a sample reads nine of around its cell before it looks the point up in
+// the same cache lines.
 class EnvironmentLight final : public Light {
 public:
     // The scene file's "environment": its keys besides "file" (read by the loader, which gives
@@ -53,10 +54,17 @@ public:
     static Vec3 mapDirection(const Vec2& uv);
 
 private:
+    // A texel's radiance and luminance in one 16-byte block.
+    struct alignas(16) Texel {
+        Color radiance;
+        float luminance;
+    };
+    // The map scaled by `intensity`, with its border.
+    static std::vector<Texel> borderedTexels(const Image& map, float intensity);
     // The texel (x, y) for x in [-1, w] (wrapping around) and y in [-1, h] (the pole rows
     // repeated), and its luminance.
-    const Color& texel(int x, int y) const { return texels_[bordered(x, y)]; }
-    float luminance(int x, int y) const { return luminances_[bordered(x, y)]; }
+    const Color& texel(int x, int y) const { return texels_[bordered(x, y)].radiance; }
+    float luminance(int x, int y) const { return texels_[bordered(x, y)].luminance; }
     std::size_t bordered(int x, int y) const {
         return static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(width_ + 2) +
                static_cast<std::size_t>(x + 1);
@@ -77,8 +85,7 @@ private:
 
     int width_, height_;
     float cosRotate_, sinRotate_;
-    std::vector<Color> texels_;      // the map scaled by the intensity, with its border
-    std::vector<float> luminances_;  // the bordered texels' luminances
+    std::vector<Texel> texels_;  // the map scaled by the intensity, with its border
     // Per row: the density over (u, v) per unit of bilinear luminance, sin(theta) at the row's
     // centre over the mean of the cells' weights (1 for all rows if the map is black).
     std::vector<float> rowDensity_;
