@@ -47,6 +47,40 @@ TEST(EnvironmentLight, MapsDirectionsAsTheContractSays) {
     EXPECT_NEAR(back.z, d.z, 1e-5f);
 }
 
+// The mapping to a float's precision in every direction (random ones, the axes, the seam and
+// the poles): u and v against the contract's formulas in double.
+TEST(EnvironmentLight, MapPointIsTheContractToAFloatsPrecision) {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::vector<Vec3> directions = {Vec3(1, 0, 0),
+                                    Vec3(-1, 0, 0),
+                                    Vec3(0, 0, 1),
+                                    Vec3(0, 0, -1),
+                                    Vec3(0, 1, 0),
+                                    Vec3(0, -1, 0),
+                                    normalize(Vec3(1e-6f, 0.3f, 1)),
+                                    normalize(Vec3(-1e-6f, 0.3f, 1)),
+                                    normalize(Vec3(1e-4f, 1, 2e-4f))};
+    for (int i = 0; i < 100000; ++i)
+        directions.push_back(
+            normalize(Vec3(static_cast<float>(uniform(rng)), static_cast<float>(uniform(rng)),
+                           static_cast<float>(uniform(rng)))));
+    for (const Vec3& d : directions) {
+        const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
+        double u = 0.5 + std::atan2(double(d.x), -double(d.z)) / (2 * kPiD);
+        const double v = std::acos(std::clamp(double(d.y) / length, -1.0, 1.0)) / kPiD;
+        const Vec2 uv = EnvironmentLight::mapPoint(d);
+        // Across the seam u = 0 is u = 1.
+        if (std::abs(uv.x - u) > 0.5) u += uv.x > u ? 1 : -1;
+        EXPECT_NEAR(uv.x, u, 2e-7) << d.x << " " << d.y << " " << d.z;
+        EXPECT_NEAR(uv.y, v, 2e-7) << d.x << " " << d.y << " " << d.z;
+        EXPECT_GE(uv.x, 0);
+        EXPECT_LT(uv.x, 1);
+        EXPECT_GE(uv.y, 0);
+        EXPECT_LT(uv.y, 1);
+    }
+}
+
 // One bright texel, seen exactly at its centre's direction (bilinear weights 1, 0, 0, 0), and,
 // turned by rotate, where the rotation takes it.
 TEST(EnvironmentLight, OneBrightTexelIsSeenInItsDirectionAndTurnedByRotate) {
