@@ -145,15 +145,17 @@ TEST(EnvironmentLight, LookupsWrapAcrossTheSeamAndHoldThePoleRows) {
 // What an escaped ray finds is the radiance and the density of its direction, as radiance() and
 // pdf() give them, in every direction (the path tracer reads both from one lookup).
 TEST(EnvironmentLight, ArrivalIsTheRadianceAndTheDensity) {
-    constexpr int kW = 12, kH = 6;
-    Image map(kW, kH);
-    std::mt19937 rng(9);
-    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    for (int y = 0; y < kH; ++y)
-        for (int x = 0; x < kW; ++x)
-            map.at(x, y) = Color(uniform(rng), uniform(rng), uniform(rng));
+    Image map(12, 6);
+    for (int k = 0; k < 12 * 6; ++k) {
+        const auto level = [k](int period) {
+            return static_cast<float>(k % period) / static_cast<float>(period);
+        };
+        map.at(k % 12, k / 12) = Color(level(7) + 0.05f, 0.2f, level(11) + 0.01f);
+    }
     const EnvironmentLight light(map, 3, 70);
     const Hit nowhere;
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     for (int i = 0; i < 1000; ++i) {
         const float z = 1 - 2 * uniform(rng), phi = 2 * std::numbers::pi_v<float> * uniform(rng);
         const float r = std::sqrt(std::max(0.0f, 1 - z * z));
