@@ -76,9 +76,10 @@ Hit Disk::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     const Vec3 p(c + q);
     Hit hit = Hit::atRoundedPoint(t, p, normal_);
     hit.uv = {static_cast<float>(phi / (2 * kPi)), static_cast<float>((R - r) / (R - Ri))};
-    // p = c + r (cos phi t + sin phi b), phi = 2 pi u, r = R - (R - Ri) v.
-    const auto cosPhi = static_cast<float>(std::cos(phi)),
-               sinPhi = static_cast<float>(std::sin(phi));
+    // p = c + r (cos phi t + sin phi b), phi = 2 pi u, r = R - (R - Ri) v; cos phi and sin phi
+    // are x / r and y / r (phi = 0 at the centre).
+    const auto cosPhi = r > 0 ? static_cast<float>(x / r) : 1.0f,
+               sinPhi = r > 0 ? static_cast<float>(y / r) : 0.0f;
     const Vec3 radial = cosPhi * tangent_ + sinPhi * bitangent_;
     const Vec3 around = -sinPhi * tangent_ + cosPhi * bitangent_;
     hit.dpdu = (2 * kPi * static_cast<float>(r)) * around;

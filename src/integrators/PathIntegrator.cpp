@@ -65,14 +65,17 @@ Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sa
         ++rayCount;
         const std::optional<Hit> found = scene_.intersect(ray, kInfinity);
         if (!found) {
+            const EnvironmentLight* environment = scene_.environment();
+            if (!environment) {
+                L += throughput * scene_.background();
+                break;
+            }
+            const EnvironmentLight::Arrival seen = environment->arrival(ray.direction);
             float weight = 1;
             // A BSDF ray escaping to an environment that light sampling could also have found.
-            const Light* environment = scene_.environment();
-            if (environment && bounces > 0 && !afterDelta)
-                weight = powerHeuristic(lastBsdfPdf,
-                                        lights_.probability(environment) *
-                                            environment->pdf(lastVertex, ray.direction, Hit{}));
-            L += throughput * scene_.background(ray.direction) * weight;
+            if (bounces > 0 && !afterDelta)
+                weight = powerHeuristic(lastBsdfPdf, lights_.probability(environment) * seen.pdf);
+            L += throughput * seen.radiance * weight;
             break;
         }
         const Hit& hit = *found;

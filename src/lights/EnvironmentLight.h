@@ -17,6 +17,10 @@ namespace lancer {
 // scene format's "environment"). Directions are sampled in proportion to the map's luminance
 // times sin(theta), the Jacobian of the mapping: a texel's cell through a Distribution2D (by the
 // cell's average luminance), then a point in the cell in proportion to the bilinear luminance.
+// The texels are kept with a border (a column wrapped around on each side, the pole rows
+// repeated), so that a lookup reads its four texels without wrapping or clamping, and each with
+// its luminance, which a sample reads nine of around its cell before it looks the point up in
+// the same cache lines.
 class EnvironmentLight final : public Light {
 public:
     // The scene file's "environment": its keys besides "file" (read by the loader, which gives
@@ -30,6 +34,14 @@ public:
     // The radiance arriving from direction d (towards the environment; any length).
     Color radiance(const Vec3& d) const;
 
+    // What a ray leaving the scene along d finds: the radiance, and the solid-angle density with
+    // which sample() picks d (pdf()), from one lookup.
+    struct Arrival {
+        Color radiance;
+        float pdf;
+    };
+    Arrival arrival(const Vec3& d) const;
+
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     bool isDelta() const override { return false; }
     float pdf(const Vec3& p, const Vec3& wi, const Hit& onLight) const override;
@@ -42,20 +54,43 @@ public:
     static Vec3 mapDirection(const Vec2& uv);
 
 private:
-    // The bilinear lookup at (u, v): u wraps around, v is clamped at the poles.
+    // A texel's radiance and luminance in one 16-byte block.
+    struct alignas(16) Texel {
+        Color radiance;
+        float luminance;
+    };
+    // The map scaled by `intensity`, with its border.
+    static std::vector<Texel> borderedTexels(const Image& map, float intensity);
+    // The texel (x, y) for x in [-1, w] (wrapping around) and y in [-1, h] (the pole rows
+    // repeated), and its luminance.
+    const Color& texel(int x, int y) const { return texels_[bordered(x, y)].radiance; }
+    float luminance(int x, int y) const { return texels_[bordered(x, y)].luminance; }
+    std::size_t bordered(int x, int y) const {
+        return static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(width_ + 2) +
+               static_cast<std::size_t>(x + 1);
+    }
+    // The cells' weights for the Distribution2D.
+    std::vector<float> cellWeights() const;
+    // The bilinear lookup at (u, v) in [0, 1)^2.
     Color lookUp(const Vec2& uv) const;
     // A point of texel (x, y)'s cell in proportion to the bilinear luminance there, from u.
     Vec2 sampleInCell(int x, int y, Vec2 u) const;
-    // The density over the map's (u, v) with which sample() picks a point.
-    float mapDensity(const Vec2& uv) const;
+    // The density over the map's (u, v) with which sample() picks a point where the lookup
+    // gives `radiance`.
+    float mapDensity(const Vec2& uv, const Color& radiance) const;
+    // The solid-angle density of the direction of map point uv, from its density over (u, v).
+    static float solidAngleDensity(float mapDensity, float sinTheta);
     Vec3 toMap(const Vec3& world) const;
     Vec3 toWorld(const Vec3& map) const;
 
-    Image map_;
+    int width_, height_;
     float cosRotate_, sinRotate_;
-    std::vector<float> cellAverage_;  // each texel's cell's average luminance
-    Distribution2D distribution_;     // of the cells, by average luminance times sin(theta)
-    Color radianceIntegral_;          // the integral of the radiance over the sphere of directions
+    std::vector<Texel> texels_;  // the map scaled by the intensity, with its border
+    // Per row: the density over (u, v) per unit of bilinear luminance, sin(theta) at the row's
+    // centre over the mean of the cells' weights (1 for all rows if the map is black).
+    std::vector<float> rowDensity_;
+    Distribution2D distribution_;  // of the cells, by average luminance times sin(theta)
+    Color radianceIntegral_;       // the integral of the radiance over the sphere of directions
 };
 
 }  // namespace lancer

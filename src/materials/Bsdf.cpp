@@ -82,8 +82,11 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, float uLobe, const Vec2& 
         return s;
     }
     if (!sidesAgree(woLocal, wiLocal, reflectsGeometrically(wo, s->wi))) return std::nullopt;
-    s->f = f(wo, s->wi);
-    s->pdf = pdf(wo, s->wi);
+    // The one-sample mixture's f and pdf are the lobe's own when it is the only lobe.
+    if (lobeCount_ > 1) {
+        s->f = f(wo, s->wi);
+        s->pdf = pdf(wo, s->wi);
+    }
     if (!(s->pdf > 0)) return std::nullopt;
     return s;
 }

@@ -37,7 +37,9 @@ public:
     virtual Color f(const Vec3& wo, const Vec3& wi) const = 0;
     virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
     // A direction for wo from u in [0,1)^2 (and uChoice in [0,1), for a lobe that also chooses
-    // between reflection and refraction), or none when the lobe has nothing to give.
+    // between reflection and refraction), or none when the lobe has nothing to give. A non-delta
+    // lobe's sample holds its own f() and pdf() for the direction (a Bsdf of that lobe alone
+    // takes them as they are).
     virtual std::optional<BsdfSample> sample(const Vec3& wo, float uChoice,
                                              const Vec2& u) const = 0;
 

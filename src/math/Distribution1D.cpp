@@ -17,6 +17,8 @@ Distribution1D::Distribution1D(std::vector<float> weights) : weights_(std::move(
     }
     // All zero: every cell equally likely, so that sampling still returns something valid.
     if (sum == 0) std::fill(weights_.begin(), weights_.end(), 1.0f);
+    uniform_ = std::all_of(weights_.begin(), weights_.end(),
+                           [&](float w) { return w == weights_.front(); });
     const std::size_t n = weights_.size();
     cdf_.resize(n + 1);
     cdf_[0] = 0;
@@ -41,6 +43,16 @@ std::size_t Distribution1D::bucket(double x) const {
 }
 
 std::size_t Distribution1D::sampleDiscrete(float u, float* pmfOut, float* uRemapped) const {
+    if (uniform_) {
+        const double scaled = static_cast<double>(u) * static_cast<double>(weights_.size());
+        const std::size_t i =
+            std::min(static_cast<std::size_t>(std::max(scaled, 0.0)), weights_.size() - 1);
+        if (pmfOut) *pmfOut = pmf(i);
+        if (uRemapped)
+            *uRemapped = std::clamp(static_cast<float>(scaled - static_cast<double>(i)), 0.0f,
+                                    kOneMinusEpsilon);
+        return i;
+    }
     // The last index i with cdf_[i] <= u; cells of zero weight are never chosen. Bounds in
     // buckets below u's are below u and those in buckets above are above it (bucket() is
     // monotone), so the search needs only the cells from the last bound before u's bucket to

@@ -38,6 +38,9 @@ private:
     std::vector<double> cdf_;  // cdf_[i]: probability of the cells before i; cdf_.back() = 1
     // firstInBucket_[j]: the first i with bucket(cdf_[i]) >= j, for j in [0, size()].
     std::vector<std::uint32_t> firstInBucket_;
+    // Whether the weights are all equal (a box filter's profile, a single light): u then finds
+    // its cell as u * size(), without a search.
+    bool uniform_ = false;
     float integral_ = 0;
 };
 

@@ -46,18 +46,28 @@ Distribution2D::Distribution2D(const std::vector<float>& values, int width, int 
       rows_(makeRows(values, width, height)),
       marginal_(rowIntegrals(values, width)) {}
 
+Distribution2D::CellSample Distribution2D::sampleCell(const Vec2& u) const {
+    // The row by its index, so that the column comes from the row whose probability is stated.
+    CellSample cell;
+    float rowProbability = 0, columnProbability = 0;
+    const std::size_t row = marginal_.sampleDiscrete(u.y, &rowProbability, &cell.offset.y);
+    const std::size_t column = rows_[row].sampleDiscrete(u.x, &columnProbability, &cell.offset.x);
+    cell.x = static_cast<int>(column);
+    cell.y = static_cast<int>(row);
+    cell.probability = rowProbability * columnProbability;
+    return cell;
+}
+
 Vec2 Distribution2D::sample(const Vec2& u, float* pdf) const {
-    // The row by its index, so that the column comes from the row whose probability is stated
-    // even where (row + offset) / height would round up to the next row's edge.
-    float rowProbability = 0, uRow = 0;
-    const std::size_t row = marginal_.sampleDiscrete(u.y, &rowProbability, &uRow);
-    float pdfX = 0;
-    const float x = rows_[row].sampleContinuous(u.x, &pdfX);
-    const float h = static_cast<float>(height_);
-    const float y = std::min((static_cast<float>(row) + uRow) / h,
-                             std::nextafter(static_cast<float>(row + 1) / h, 0.0f));
-    *pdf = pdfX * rowProbability * h;
-    return {x, y};
+    const CellSample cell = sampleCell(u);
+    // (cell + offset) / size may round up to the next cell's edge: the point stays in its cell.
+    const auto place = [](int index, float offset, int count) {
+        const float n = static_cast<float>(count);
+        return std::min((static_cast<float>(index) + offset) / n,
+                        std::nextafter(static_cast<float>(index + 1) / n, 0.0f));
+    };
+    *pdf = cell.probability * static_cast<float>(width_) * static_cast<float>(height_);
+    return {place(cell.x, cell.offset.x, width_), place(cell.y, cell.offset.y, height_)};
 }
 
 float Distribution2D::pdf(const Vec2& p) const {

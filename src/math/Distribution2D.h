@@ -18,7 +18,18 @@ public:
 
     int width() const { return width_; }
     int height() const { return height_; }
+    // The mean of the values: the integral of the piecewise-constant function over [0, 1)^2.
+    float integral() const { return marginal_.integral(); }
 
+    // A cell (x across, y down) picked in proportion to its value, with its probability, and
+    // where u fell within the cell's share of [0, 1)^2, rescaled to [0, 1)^2: a uniform point
+    // of the cell, for a caller that places its own point within it.
+    struct CellSample {
+        int x, y;
+        Vec2 offset;
+        float probability;
+    };
+    CellSample sampleCell(const Vec2& u) const;
     // A point (x across, y down) distributed as the density; the density there in *pdf.
     Vec2 sample(const Vec2& u, float* pdf) const;
     // The density at p in [0, 1)^2.

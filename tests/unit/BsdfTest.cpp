@@ -15,6 +15,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "DirectionChiSquare.h"
@@ -127,19 +128,28 @@ TEST(Bsdf, MixtureOfDiffuseAndHighlightFollowsItsPdf) {
     }
 }
 
+// For a mixture and for a lobe alone (whose sample's f and pdf the Bsdf takes as the lobe gives
+// them), from the front and from the back.
 TEST(Bsdf, SampledValuesAreThoseOfFAndPdf) {
-    const MaterialAtHit m(0.3f, 0.5f, 40, 0, 0);
-    const Bsdf bsdf(m.material, m.hit, m.hit.ns);
-    UniformSource random(3);
-    const Vec3 wo = direction(35, 10);
-    for (int k = 0; k < 1000; ++k) {
-        const float uLobe = random.next();
-        const auto s = bsdf.sample(wo, uLobe, random.next2D());
-        if (!s) continue;
-        EXPECT_FALSE(s->isDelta);
-        EXPECT_NEAR(s->pdf, bsdf.pdf(wo, s->wi), 1e-4f * s->pdf);
-        EXPECT_NEAR(s->f.r, bsdf.f(wo, s->wi).r, 1e-4f * s->f.r);
-    }
+    for (const auto& [kd, ks] :
+         {std::pair{0.3f, 0.5f}, std::pair{0.6f, 0.0f}, std::pair{0.0f, 0.5f}})
+        for (const float woTheta : {35.0f, 130.0f}) {
+            const MaterialAtHit m(kd, ks, 40, 0, 0);
+            const Bsdf bsdf(m.material, m.hit, m.hit.ns);
+            UniformSource random(3);
+            const Vec3 wo = direction(woTheta, 10);
+            int sampled = 0;
+            for (int k = 0; k < 1000; ++k) {
+                const float uLobe = random.next();
+                const auto s = bsdf.sample(wo, uLobe, random.next2D());
+                if (!s) continue;
+                ++sampled;
+                EXPECT_FALSE(s->isDelta);
+                EXPECT_NEAR(s->pdf, bsdf.pdf(wo, s->wi), 1e-4f * s->pdf);
+                EXPECT_NEAR(s->f.r, bsdf.f(wo, s->wi).r, 1e-4f * s->f.r);
+            }
+            EXPECT_GT(sampled, 500) << "kd " << kd << ", ks " << ks << ", wo at " << woTheta;
+        }
 }
 
 // The directional albedo: the integral of f cos(theta_i) over the sphere of incident directions,

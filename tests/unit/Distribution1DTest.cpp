@@ -53,6 +53,24 @@ TEST(Distribution1D, RejectsNegativeOrNonFiniteWeights) {
     EXPECT_THROW(Distribution1D(std::vector<float>{}), std::invalid_argument);
 }
 
+// Equal weights (a box filter's table, a single light) are found without a search: cell
+// floor(u n), probability 1 / n, and u's place in the cell u n - floor(u n).
+TEST(Distribution1D, EqualWeightsPickCellUNDirectly) {
+    for (const std::size_t n : {std::size_t{1}, std::size_t{3}, std::size_t{256}}) {
+        const Distribution1D d(std::vector<float>(n, 2.5f));
+        for (const float u : {0.0f, 0.2f, 1.0f / 3, 0.5f, 0.74f, 0x1.fffffep-1f}) {
+            float pmf = 0, remapped = -1;
+            const std::size_t i = d.sampleDiscrete(u, &pmf, &remapped);
+            const double scaled = static_cast<double>(u) * static_cast<double>(n);
+            EXPECT_EQ(i, std::min(static_cast<std::size_t>(scaled), n - 1)) << n << " " << u;
+            EXPECT_NEAR(pmf, 1.0 / static_cast<double>(n), 1e-7);
+            EXPECT_NEAR(remapped, scaled - static_cast<double>(i), 1e-6);
+            EXPECT_LT(remapped, 1.0f);
+            EXPECT_NEAR(d.sampleContinuous(u), u, 1e-6f);
+        }
+    }
+}
+
 // sampleDiscrete searches only the cells of u's bucket; it must pick what a search of the whole
 // cumulative table picks, for every u, on the boundaries and beside them, whatever the weights
 // (spikes, long runs of zeros, tiny cells several to a bucket).

@@ -43,6 +43,32 @@ TEST(Distribution2D, SamplingInvertsTheMarginalThenTheConditional) {
     EXPECT_LT(p.y, 1.0f);
 }
 
+// sampleCell gives the cell sample() places its point in, the cell's probability, and where u
+// fell within the cell's share: sample() is (cell + offset) / size.
+TEST(Distribution2D, SampleCellGivesTheCellItsProbabilityAndTheOffsetWithin) {
+    const Distribution2D d({1, 3, 0, 4}, 2, 2);
+    // The first row holds half the mass, its first column a quarter of that: u.y = 0.25 is the
+    // row's middle, u.x = 0.125 the column's.
+    Distribution2D::CellSample cell = d.sampleCell(Vec2(0.125f, 0.25f));
+    EXPECT_EQ(cell.x, 0);
+    EXPECT_EQ(cell.y, 0);
+    EXPECT_FLOAT_EQ(cell.probability, 0.125f);
+    EXPECT_FLOAT_EQ(cell.offset.x, 0.5f);
+    EXPECT_FLOAT_EQ(cell.offset.y, 0.5f);
+    // The second row's mass is all in its second column: u.x = 0.9 is 9/10 across it.
+    cell = d.sampleCell(Vec2(0.9f, 0.625f));
+    EXPECT_EQ(cell.x, 1);
+    EXPECT_EQ(cell.y, 1);
+    EXPECT_FLOAT_EQ(cell.probability, 0.5f);
+    EXPECT_NEAR(cell.offset.x, 0.9f, 1e-6f);
+    EXPECT_NEAR(cell.offset.y, 0.25f, 1e-6f);
+    float pdf = 0;
+    const Vec2 p = d.sample(Vec2(0.9f, 0.625f), &pdf);
+    EXPECT_NEAR(p.x, (1 + 0.9f) / 2, 1e-6f);
+    EXPECT_NEAR(p.y, (1 + 0.25f) / 2, 1e-6f);
+    EXPECT_FLOAT_EQ(pdf, cell.probability * 4);
+}
+
 TEST(Distribution2D, AllZeroIsUniformAndBadSizesAreRefused) {
     const Distribution2D d({0, 0, 0, 0, 0, 0}, 3, 2);
     EXPECT_FLOAT_EQ(d.pdf(Vec2(0.1f, 0.9f)), 1.0f);

@@ -47,6 +47,40 @@ TEST(EnvironmentLight, MapsDirectionsAsTheContractSays) {
     EXPECT_NEAR(back.z, d.z, 1e-5f);
 }
 
+// The mapping to a float's precision in every direction (random ones, the axes, the seam and
+// the poles): u and v against the contract's formulas in double.
+TEST(EnvironmentLight, MapPointIsTheContractToAFloatsPrecision) {
+    std::mt19937 rng(13);
+    std::uniform_real_distribution<double> uniform(-1.0, 1.0);
+    std::vector<Vec3> directions = {Vec3(1, 0, 0),
+                                    Vec3(-1, 0, 0),
+                                    Vec3(0, 0, 1),
+                                    Vec3(0, 0, -1),
+                                    Vec3(0, 1, 0),
+                                    Vec3(0, -1, 0),
+                                    normalize(Vec3(1e-6f, 0.3f, 1)),
+                                    normalize(Vec3(-1e-6f, 0.3f, 1)),
+                                    normalize(Vec3(1e-4f, 1, 2e-4f))};
+    for (int i = 0; i < 100000; ++i)
+        directions.push_back(
+            normalize(Vec3(static_cast<float>(uniform(rng)), static_cast<float>(uniform(rng)),
+                           static_cast<float>(uniform(rng)))));
+    for (const Vec3& d : directions) {
+        const double length = std::sqrt(double(d.x) * d.x + double(d.y) * d.y + double(d.z) * d.z);
+        double u = 0.5 + std::atan2(double(d.x), -double(d.z)) / (2 * kPiD);
+        const double v = std::acos(std::clamp(double(d.y) / length, -1.0, 1.0)) / kPiD;
+        const Vec2 uv = EnvironmentLight::mapPoint(d);
+        // Across the seam u = 0 is u = 1.
+        if (std::abs(uv.x - u) > 0.5) u += uv.x > u ? 1 : -1;
+        EXPECT_NEAR(uv.x, u, 2e-7) << d.x << " " << d.y << " " << d.z;
+        EXPECT_NEAR(uv.y, v, 2e-7) << d.x << " " << d.y << " " << d.z;
+        EXPECT_GE(uv.x, 0);
+        EXPECT_LT(uv.x, 1);
+        EXPECT_GE(uv.y, 0);
+        EXPECT_LT(uv.y, 1);
+    }
+}
+
 // One bright texel, seen exactly at its centre's direction (bilinear weights 1, 0, 0, 0), and,
 // turned by rotate, where the rotation takes it.
 TEST(EnvironmentLight, OneBrightTexelIsSeenInItsDirectionAndTurnedByRotate) {
@@ -71,6 +105,66 @@ TEST(EnvironmentLight, OneBrightTexelIsSeenInItsDirectionAndTurnedByRotate) {
     const EnvironmentLight two(map, 1, 0);
     const Vec3 between = EnvironmentLight::mapDirection(Vec2(12.0f / kW, 3.5f / kH));
     EXPECT_NEAR(two.radiance(between).r, 3, 1e-3f);
+}
+
+// The lookup wraps around the seam at u = 0 (between the last column's centre and the first's)
+// and holds the first and last rows' values beyond their centres up to the poles.
+TEST(EnvironmentLight, LookupsWrapAcrossTheSeamAndHoldThePoleRows) {
+    constexpr int kW = 8, kH = 4;
+    Image map(kW, kH, Color(0.5f));
+    for (int x = 0; x < kW; ++x) {
+        map.at(x, 0) = Color(2, 3, 4);
+        map.at(x, kH - 1) = Color(1);
+    }
+    map.at(0, 2) = Color(4, 0, 0);
+    map.at(kW - 1, 2) = Color(0, 0, 8);
+    const EnvironmentLight light(map, 1, 0);
+    // u = 0 on row 2's centre: halfway between texels (7, 2) and (0, 2).
+    const Color seam = light.radiance(EnvironmentLight::mapDirection(Vec2(0, 2.5f / kH)));
+    EXPECT_NEAR(seam.r, 2, 1e-5f);
+    EXPECT_NEAR(seam.g, 0, 1e-5f);
+    EXPECT_NEAR(seam.b, 4, 1e-5f);
+    // A quarter texel past the last column's centre: 3/4 of it, 1/4 of the first column's.
+    const Color past = light.radiance(EnvironmentLight::mapDirection(Vec2(7.75f / kW, 2.5f / kH)));
+    EXPECT_NEAR(past.r, 1, 1e-5f);
+    EXPECT_NEAR(past.b, 6, 1e-5f);
+    // Above the first row's centres and below the last's, the rows' own values.
+    for (const float u : {0.0f, 0.3f, 0.9f}) {
+        const Color top = light.radiance(EnvironmentLight::mapDirection(Vec2(u, 0.2f / kH)));
+        EXPECT_NEAR(top.r, 2, 1e-5f);
+        EXPECT_NEAR(top.g, 3, 1e-5f);
+        EXPECT_NEAR(top.b, 4, 1e-5f);
+        const Color bottom =
+            light.radiance(EnvironmentLight::mapDirection(Vec2(u, (kH - 0.2f) / kH)));
+        EXPECT_NEAR(bottom.g, 1, 1e-5f);
+    }
+    EXPECT_NEAR(light.radiance(Vec3(0, 1, 0)).b, 4, 1e-5f);
+    EXPECT_NEAR(light.radiance(Vec3(0, -1, 0)).b, 1, 1e-5f);
+}
+
+// What an escaped ray finds is the radiance and the density of its direction, as radiance() and
+// pdf() give them, in every direction (the path tracer reads both from one lookup).
+TEST(EnvironmentLight, ArrivalIsTheRadianceAndTheDensity) {
+    Image map(12, 6);
+    for (int k = 0; k < 12 * 6; ++k) {
+        const auto level = [k](int period) {
+            return static_cast<float>(k % period) / static_cast<float>(period);
+        };
+        map.at(k % 12, k / 12) = Color(level(7) + 0.05f, 0.2f, level(11) + 0.01f);
+    }
+    const EnvironmentLight light(map, 3, 70);
+    const Hit nowhere;
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
+    for (int i = 0; i < 1000; ++i) {
+        const float z = 1 - 2 * uniform(rng), phi = 2 * std::numbers::pi_v<float> * uniform(rng);
+        const float r = std::sqrt(std::max(0.0f, 1 - z * z));
+        const Vec3 d = Vec3(r * std::cos(phi), z, r * std::sin(phi)) * 2.5f;  // any length
+        const EnvironmentLight::Arrival seen = light.arrival(d);
+        EXPECT_EQ(seen.radiance, light.radiance(d));
+        EXPECT_EQ(seen.pdf, light.pdf(Vec3(0), d, nowhere));
+        EXPECT_GT(seen.pdf, 0);
+    }
 }
 
 // The density is the map's (bilinear) luminance times sin(theta), normalised: the cells are
