@@ -31,15 +31,23 @@ std::vector<std::string> with(std::vector<std::string> arguments,
     return arguments;
 }
 
-// Starts `render`, interrupts it after `delay`, and returns once it has left its resume file.
+// Starts `render`, interrupts it after `delay`, and returns once it has left its resume file. A
+// busy machine may still be loading the scene then (nothing is written): the render is started
+// again and interrupted later, twice as late each time.
 void interruptedRender(const TempFolder& folder, const std::vector<std::string>& render,
                        std::chrono::milliseconds delay) {
-    LancerProcess lancer(render, folder.path());
-    std::this_thread::sleep_for(delay);
-    lancer.sendSignal(SIGINT);
-    const RunResult run = lancer.wait(std::chrono::seconds(30));
-    ASSERT_EQ(run.exitStatus, 130) << run << " (the render ended before the signal?)";
-    ASSERT_TRUE(fs::exists(folder / "out.pfm.resume")) << run;
+    for (int attempt = 0;; ++attempt, delay *= 2) {
+        LancerProcess lancer(render, folder.path());
+        std::this_thread::sleep_for(delay);
+        lancer.sendSignal(SIGINT);
+        const RunResult run = lancer.wait(std::chrono::seconds(30));
+        ASSERT_EQ(run.exitStatus, 130) << run << " (the render ended before the signal?)";
+        if (attempt < 4 &&
+            run.standardError.find("interrupted while loading the scene") != std::string::npos)
+            continue;
+        ASSERT_TRUE(fs::exists(folder / "out.pfm.resume")) << run;
+        return;
+    }
 }
 
 // The parameter is when the render is interrupted, as a fraction of the time the whole render took
