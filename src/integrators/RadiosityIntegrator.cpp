@@ -21,11 +21,10 @@ namespace lancer {
 RadiosityIntegrator::RadiosityIntegrator(const Scene& scene, int maxDepth,
                                          std::shared_ptr<const RadiositySolution> solution,
                                          int finalGather)
-    : WhittedIntegrator(scene, maxDepth, GlossyLobes::Traced),
+    : WhittedIntegrator(scene, maxDepth),
       solution_(std::move(solution)),
-      finalGather_(finalGather) {
-    if (finalGather_ > 0) emitters_.emplace(scene);
-}
+      finalGather_(finalGather),
+      emitters_(scene) {}
 
 std::unique_ptr<Integrator> RadiosityIntegrator::create(const Scene& scene,
                                                         const IntegratorSetup& setup) {
@@ -52,6 +51,7 @@ Color RadiosityIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const 
         L += kd * E / kPi;
     }
     if (bsdf.hasGlossyLobe()) L += highlights(hit, bsdf, n, wo, rayCount);
+    if (bsdf.glossyLobeCount() > 0) L += glossyReflection(hit, bsdf, n, wo, sampler, rayCount);
     return L;
 }
 
@@ -93,65 +93,85 @@ Color RadiosityIntegrator::gatheredIrradiance(const Hit& hit, const Vec3& n, con
         sum += gatherRadiance(hit.spawnRay(wi), 0, sampler, rayCount);
     }
     // Cosine-distributed directions: E = pi x the mean radiance.
-    return emittersIrradiance(hit, n, sampler, rayCount) +
-           sum * (kPi / static_cast<float>(finalGather_));
+    const Color emitted = sampledEmitters(hit, n, finalGather_, true, sampler, rayCount,
+                                          [](const Vec3&) { return Color(1); });
+    return emitted + sum * (kPi / static_cast<float>(finalGather_));
 }
 
-Color RadiosityIntegrator::emittersIrradiance(const Hit& hit, const Vec3& n, Sampler& sampler,
-                                              std::uint64_t& rayCount) const {
+template <typename Response>
+Color RadiosityIntegrator::sampledEmitters(const Hit& hit, const Vec3& n, int count,
+                                           bool pointLightsToo, Sampler& sampler,
+                                           std::uint64_t& rayCount,
+                                           const Response& response) const {
     const Vec2 offset = sampler.get2D();
     const std::uint64_t seed = patternSeed(offset);
     Color sum;
-    for (int k = 0; k < finalGather_; ++k) {
+    for (int k = 0; k < count; ++k) {
         // The light picked independently of the point's cell, so that each light's points are
         // still uniform over it.
         const auto choice =
-            emitters_->choose(static_cast<float>(hashValues(seed, k, 1) >> 40) * 0x1p-24f);
+            emitters_.choose(static_cast<float>(hashValues(seed, k, 1) >> 40) * 0x1p-24f);
         if (!choice) break;
+        // Leaving a point light's picks out leaves the estimate of the others' light unbiased.
+        if (!pointLightsToo && choice->light->isDelta()) continue;
         const LightSample ls =
-            choice->light->sample(hit.p, shifted(stratifiedPoint(k, finalGather_, seed), offset));
+            choice->light->sample(hit.p, shifted(stratifiedPoint(k, count, seed), offset));
         const float cosTheta = dot(n, ls.wi);
         if (!(cosTheta > 0) || ls.irradiance.isBlack() || !ls.irradiance.isFinite()) continue;
-        sum += cosTheta * ls.irradiance * ShadowRays::transmittance(scene(), hit, ls, rayCount) /
-               choice->probability;
+        const Color r = response(ls.wi);
+        if (r.isBlack()) continue;
+        sum += r * cosTheta * ls.irradiance *
+               ShadowRays::transmittance(scene(), hit, ls, rayCount) / choice->probability;
     }
-    return sum / static_cast<float>(finalGather_);
+    return sum / static_cast<float>(count);
+}
+
+Color RadiosityIntegrator::glossyReflection(const Hit& hit, const Bsdf& bsdf, const Vec3& n,
+                                            const Vec3& wo, Sampler& sampler,
+                                            std::uint64_t& rayCount) const {
+    Color L = sampledEmitters(hit, n, kHighlightSamples, false, sampler, rayCount,
+                              [&](const Vec3& wi) { return bsdf.glossyF(wo, wi, false); });
+    for (std::size_t lobe = 0; lobe < bsdf.glossyLobeCount(); ++lobe)
+        if (const std::optional<SpecularRay> r = bsdf.glossyRay(lobe, wo, sampler.get2D()))
+            L += r->weight * gatherRadiance(hit.spawnRay(r->direction), 0, sampler, rayCount);
+    return L;
 }
 
 Color RadiosityIntegrator::gatherRadiance(const Ray& ray, int glossyBounces, Sampler& sampler,
                                           std::uint64_t& rayCount) const {
     ++rayCount;
     const std::optional<Hit> found = scene().intersect(ray, kInfinity);
-    // A gather ray's emitters are sampled from the gathering point; a glossy reflection's are not.
-    const bool emittersSampled = glossyBounces == 0;
-    // A plain background lights nothing (it is not in the solution either).
-    if (!found)
-        return emittersSampled || !scene().environment() ? Color(0)
-                                                         : scene().background(ray.direction);
+    // The emitters, the environment among them, are sampled where the ray comes from; a plain
+    // background lights nothing (it is not in the solution either).
+    if (!found) return Color(0);
     const Hit& hit = *found;
     const Vec3 wo = -ray.direction;
     const bool front = hit.frontFace(ray);
     Color L;
-    if ((!emittersSampled || !emitters_->lightAt(hit)) && (front || hit.shape->emitsOnBothSides()))
+    if (!emitters_.lightAt(hit) && (front || hit.shape->emitsOnBothSides()))
         L += hit.material->emission(hit);
     const Bsdf bsdf(*hit.material, hit, wo, Bsdf::Weights::AsGiven);
     const Color kd = bsdf.diffuseReflectance();
-    if (!kd.isBlack())
-        L += kd * solutionIrradiance(hit, bsdf.shadingNormal(front), wo, sampler, rayCount) / kPi;
-    // The solution carries no glossy reflection: a glossy surface's is followed along one
-    // direction drawn from each lobe, so that what a glossy floor reflects of the lamps and the
-    // room reaches the diffuse surfaces gathering it.
-    if (glossyBounces < kGlossyBouncesGathered)
-        for (std::size_t lobe = 0; lobe < bsdf.glossyLobeCount(); ++lobe)
-            if (const std::optional<SpecularRay> r = bsdf.glossyRay(lobe, wo, sampler.get2D()))
-                L += r->weight * gatherRadiance(hit.spawnRay(r->direction), glossyBounces + 1,
-                                                sampler, rayCount);
+    const Vec3 n = bsdf.shadingNormal(front);
+    if (!kd.isBlack()) L += kd * solutionIrradiance(hit, n, wo, sampler, rayCount) / kPi;
+    // The solution carries no glossy reflection: a glossy surface's is estimated here as at an
+    // eye ray's hit, by an emitter sample and a direction drawn from each lobe, so that what a
+    // glossy floor reflects of the lamps and the room reaches the surfaces gathering it.
+    if (bsdf.glossyLobeCount() > 0) {
+        L += sampledEmitters(hit, n, 1, true, sampler, rayCount,
+                             [&](const Vec3& wi) { return bsdf.glossyF(wo, wi, false); });
+        if (glossyBounces < kGlossyBouncesGathered)
+            for (std::size_t lobe = 0; lobe < bsdf.glossyLobeCount(); ++lobe)
+                if (const std::optional<SpecularRay> r = bsdf.glossyRay(lobe, wo, sampler.get2D()))
+                    L += r->weight * gatherRadiance(hit.spawnRay(r->direction), glossyBounces + 1,
+                                                    sampler, rayCount);
+    }
     return L;
 }
 
 Color RadiosityIntegrator::highlights(const Hit& hit, const Bsdf& bsdf, const Vec3& n,
                                       const Vec3& wo, std::uint64_t& rayCount) const {
-    // Only point-like lights: the glossy and rough lobes' traced rays find everything else.
+    // Only point-like lights: glossyReflection and the rough lobes' traced rays find the rest.
     Color L;
     for (const auto& light : scene().lights()) {
         if (!light->isDelta()) continue;

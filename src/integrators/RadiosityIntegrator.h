@@ -13,12 +13,13 @@ namespace lancer {
 // reflection and refraction followed), but at a diffuse surface the light it reflects comes from
 // the radiosity solution, interpolated smoothly over the element under the hit: the diffuse
 // lobes' albedo / pi times the irradiance. The glossy lobes (the normalized Blinn-Phong lobe)
-// reflect what one direction per pixel sample drawn from each finds, traced as the rough lobes'
-// are: the solution on the surfaces it meets, emitters, area lights, mirrors, the environment.
-// Point-like lights, which no ray meets, add their highlights through the lobes' f. The lights'
-// diffuse light is in the solution already, and there is no ambient term, so no light is
-// counted twice. Where the solution has no element (a plane beyond the clipped part), the
-// diffuse light is the lights' direct light alone.
+// reflect the emitters (area lights, emissive surfaces, the environment) by light samples, and
+// everything else along one direction per pixel sample drawn from each lobe, gathered as the
+// final gather's rays are: the solution on the surfaces it meets, what further glossy surfaces
+// reflect, the emitters no sample reaches. Point-like lights add the glossy and rough lobes'
+// highlights through their f. The lights' diffuse light is in the solution already, and there is
+// no ambient term, so no light is counted twice. Where the solution has no element (a plane
+// beyond the clipped part), the diffuse light is the lights' direct light alone.
 // With a final gather of N rays (the classic two-pass method), the irradiance at an eye ray's
 // diffuse hit is not interpolated but computed there: N samples of the emitters (lights and
 // emissive surfaces, as the path tracer picks them) with shadow rays, plus what N
@@ -40,6 +41,9 @@ private:
     // The glossy and rough lobes' highlights of the point-like lights.
     Color highlights(const Hit& hit, const Bsdf& bsdf, const Vec3& n, const Vec3& wo,
                      std::uint64_t& rayCount) const;
+    // What the glossy lobes reflect of everything but the point-like lights.
+    Color glossyReflection(const Hit& hit, const Bsdf& bsdf, const Vec3& n, const Vec3& wo,
+                           Sampler& sampler, std::uint64_t& rayCount) const;
     // The irradiance on the side n faces (towards wo) from the solution, or from the lights alone
     // where it has no element.
     Color solutionIrradiance(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,
@@ -48,21 +52,29 @@ private:
     // that side is ng.
     Color gatheredIrradiance(const Hit& hit, const Vec3& n, const Vec3& ng, Sampler& sampler,
                              std::uint64_t& rayCount) const;
-    // The emitters' part of it.
-    Color emittersIrradiance(const Hit& hit, const Vec3& n, Sampler& sampler,
-                             std::uint64_t& rayCount) const;
-    // The light the first surface along `ray` sends back: its diffuse reflection from the
-    // solution, what its glossy lobes reflect (followed up to kGlossyBouncesGathered times), and
-    // its emission, but that of an emitter emittersIrradiance samples when the ray is a gather
-    // ray (glossyBounces 0).
+    // The mean over `count` samples of the emitters (picked as the path tracer picks them,
+    // point-like lights too or not) of response(wi) cos irradiance / probability, with shadow
+    // rays: the irradiance for a response of 1.
+    template <typename Response>
+    Color sampledEmitters(const Hit& hit, const Vec3& n, int count, bool pointLightsToo,
+                          Sampler& sampler, std::uint64_t& rayCount,
+                          const Response& response) const;
+    // The light the first surface along `ray` sends back but the sampled emitters' (which the
+    // point the ray leaves samples): its diffuse reflection from the solution, its glossy
+    // reflection (an emitter sample and, up to kGlossyBouncesGathered glossy reflections deep, one
+    // direction drawn from each lobe, gathered again), the emission of an emitter no sample
+    // reaches (an emissive infinite plane).
     Color gatherRadiance(const Ray& ray, int glossyBounces, Sampler& sampler,
                          std::uint64_t& rayCount) const;
 
     static constexpr int kGlossyBouncesGathered = 2;
+    // Emitter samples per pixel sample for a glossy surface's highlights (as many as Whitted's
+    // area lights take by default).
+    static constexpr int kHighlightSamples = 16;
 
     std::shared_ptr<const RadiositySolution> solution_;
     int finalGather_;
-    std::optional<LightSampler> emitters_;  // with a final gather only
+    LightSampler emitters_;
 };
 
 }  // namespace lancer

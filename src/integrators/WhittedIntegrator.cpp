@@ -15,8 +15,8 @@
 
 namespace lancer {
 
-WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, GlossyLobes glossyLobes)
-    : scene_(scene), maxDepth_(maxDepth), glossyLobes_(glossyLobes) {}
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth)
+    : scene_(scene), maxDepth_(maxDepth) {}
 
 std::unique_ptr<Integrator> WhittedIntegrator::create(const Scene& scene, const IntegratorSetup&) {
     return std::make_unique<WhittedIntegrator>(scene, scene.settings().maxDepth);
@@ -82,10 +82,6 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
         for (std::size_t i = 0; i < tracedCount; ++i)
             L += traceFurther(traced[i]);
     }
-    if (glossyLobes_ == GlossyLobes::Traced)
-        for (std::size_t lobe = 0; lobe < bsdf.glossyLobeCount(); ++lobe)
-            if (const std::optional<SpecularRay> r = bsdf.glossyRay(lobe, wo, sampler.get2D()))
-                L += traceFurther(*r);
     return L;
 }
 

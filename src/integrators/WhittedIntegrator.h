@@ -15,17 +15,10 @@ struct Hit;
 // ambient, the lobes' local responses to the lights with shadow rays, and the delta lobes'
 // recursive reflection and refraction (weights split by the Fresnel term for transmissive
 // materials) up to maxDepth bounces, and the rough lobes' traced rays. Subclasses may replace the
-// local shading (ambient and direct lighting) and keep the rest (radiosity does, and also traces
-// the glossy lobes).
+// local shading (ambient and direct lighting) and keep the rest (radiosity does).
 class WhittedIntegrator : public Integrator {
 public:
-    // How the glossy lobes (Blinn-Phong's specular) reflect light: lit by the lights alone (the
-    // scene format's equation), or also along one direction per pixel sample drawn from each
-    // lobe and traced, as the rough lobes are, which then finds everything the lobe reflects.
-    enum class GlossyLobes { LitByLights, Traced };
-
-    WhittedIntegrator(const Scene& scene, int maxDepth,
-                      GlossyLobes glossyLobes = GlossyLobes::LitByLights);
+    WhittedIntegrator(const Scene& scene, int maxDepth);
     static std::unique_ptr<Integrator> create(const Scene& scene, const IntegratorSetup& setup);
 
     Color radiance(const Ray& ray, const RayCone& footprint, Sampler& sampler,
@@ -55,7 +48,6 @@ private:
 
     const Scene& scene_;
     int maxDepth_;
-    GlossyLobes glossyLobes_;
 };
 
 }  // namespace lancer

@@ -26,8 +26,8 @@ struct Hit;
 //
 // Whitted and radiosity shade with the scene format's equation instead, from the same lobes with
 // their weights as given: the lobes' local responses lit by the lights, the delta lobes' light
-// traced along specular rays, and (radiosity) the diffuse lobes' albedo, the other lobes' f for
-// point-like lights, and the glossy and rough lobes' traced rays for the rest.
+// traced along specular rays, and (radiosity) the diffuse lobes' albedo, the glossy lobes' f and
+// sampled directions, and the rough lobes' traced rays.
 //
 // Directions are in world space, unit length and point away from the surface. The lobes live in
 // the frame of the shading normal (turned to the front side); light that would cross the
@@ -89,8 +89,8 @@ public:
     // those that would cross the geometric surface the wrong way. Returns how many were written.
     std::size_t tracedRays(std::size_t index, const Vec3& wo, const Vec2& u,
                            std::array<SpecularRay, 2>& rays) const;
-    // The glossy lobes (neither diffuse, delta nor rough), which radiosity traces with one
-    // direction per pixel sample.
+    // The glossy lobes (neither diffuse, delta nor rough), whose reflection of what is not a light
+    // radiosity gathers along one direction per pixel sample.
     std::size_t glossyLobeCount() const { return glossyCount_; }
     // A direction drawn from the glossy lobe `index` with u, as the path tracer samples it, with
     // the weight f cos / pdf of its radiance; none where the lobe gives nothing or the direction

@@ -23,8 +23,8 @@ public:
     enum class Kind {
         Diffuse,  // ideal diffuse, f = weight / pi (local response weight cos theta_L): the
                   // light radiosity computes
-        Glossy,   // any other lobe with a density: highlights (radiosity also traces a
-                  // direction sampled from it)
+        Glossy,   // any other lobe with a density: highlights (radiosity also gathers along
+                  // a direction sampled from it)
         Delta,    // scatters into single directions (mirror, smooth glass): f() and pdf() are 0
                   // and only sample() finds them
         Rough,    // a microfacet lobe with a density about the mirror and refracted directions
