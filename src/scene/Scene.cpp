@@ -42,7 +42,9 @@ void Scene::buildAccelerationStructure() {
     bounds.reserve(boundedShapes_.size());
     for (const auto& shape : boundedShapes_)
         bounds.push_back(shape->bounds());
-    bvh_ = std::make_unique<Bvh>(bounds);
+    // One shape per leaf: testing a shape (a csg, a mesh with its own hierarchy) costs far more
+    // than testing its box, which the heuristic cannot know.
+    bvh_ = std::make_unique<Bvh>(bounds, 1);
     std::vector<std::unique_ptr<Shape>> ordered;
     ordered.reserve(boundedShapes_.size());
     for (std::uint32_t index : bvh_->primitiveOrder())
