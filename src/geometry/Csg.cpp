@@ -147,8 +147,8 @@ bool Csg::onResultSurface(std::size_t k, const Vec3& p) const {
     return inResult(othersInside + 1, firstInside || k == 0) != inResult(othersInside, firstInside);
 }
 
-void Csg::resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOnly,
-                          LineCrossings& crossings) const {
+template <typename Visit>
+void Csg::sweepLine(const Ray& ray, double tFrom, double tTo, Visit&& visit) const {
     const SweepLease lease;
     Sweep& sweep = *lease;
     // The children's crossings, numbered as the result's primitives.
@@ -173,10 +173,17 @@ void Csg::resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOn
                              static_cast<std::uint32_t>(i), events[i].entering});
         }
     }
-    // In order of t; at equal t, in the children's order.
-    std::sort(order.begin(), order.end(), [](const SweepEvent& a, const SweepEvent& b) {
-        return a.t < b.t || (a.t == b.t && a.primitive < b.primitive);
-    });
+    // In order of t; at equal t, in the children's order. By insertion: there are few, and each
+    // child's come in order already.
+    for (std::size_t i = 1; i < order.size(); ++i) {
+        const SweepEvent event = order[i];
+        std::size_t j = i;
+        for (; j > 0 && (event.t < order[j - 1].t ||
+                         (event.t == order[j - 1].t && event.primitive < order[j - 1].primitive));
+             --j)
+            order[j] = order[j - 1];
+        order[j] = event;
+    }
 
     // The rounding of a crossing's t grows with the distances from the origin it was found from.
     const double speed = length(Vec3d(ray.direction));
@@ -206,9 +213,7 @@ void Csg::resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOn
                     chosen = i;
                     break;
                 }
-            const SurfaceCrossing& surface = events[order[chosen].index].crossing;
-            crossings.push_back({surface, inAfter});
-            if (firstOnly && surface.t > tFrom) return;
+            if (visit(events[order[chosen].index].crossing, inAfter)) return;
             inBefore = inAfter;
         }
         first = end;
@@ -216,18 +221,21 @@ void Csg::resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOn
 }
 
 std::optional<SurfaceCrossing> Csg::cross(const Ray& ray, float tMax) const {
-    thread_local LineCrossings crossings;
-    crossings.clear();
-    resultCrossings(ray, 0, tMax, true, crossings);
-    if (crossings.empty()) return std::nullopt;
-    const SurfaceCrossing& last = crossings.back().crossing;
-    if (last.t > 0 && last.t < tMax) return last;
-    return std::nullopt;
+    std::optional<SurfaceCrossing> nearest;
+    sweepLine(ray, 0, tMax, [&](const SurfaceCrossing& surface, bool) {
+        if (surface.t <= 0) return false;  // behind the origin: on to the next
+        if (surface.t < tMax) nearest = surface;
+        return true;
+    });
+    return nearest;
 }
 
 void Csg::crossLine(const Ray& ray, LineCrossings& crossings) const {
     constexpr double kWholeLine = std::numeric_limits<double>::infinity();
-    resultCrossings(ray, -kWholeLine, kWholeLine, false, crossings);
+    sweepLine(ray, -kWholeLine, kWholeLine, [&](const SurfaceCrossing& surface, bool entering) {
+        crossings.push_back({surface, entering});
+        return false;
+    });
 }
 
 Hit Csg::record(const Ray& ray, const SurfaceCrossing& crossing) const {

@@ -56,11 +56,12 @@ private:
     // Adds the parts of child k's facet that lie on the result's surface.
     void addVisibleParts(std::size_t k, const Tessellation::Facet& facet, int refinements,
                          std::vector<Tessellation::Facet>& facets) const;
-    // The result's crossings along the ray's line that the children met within tFrom < t < tTo
-    // make (those met only outside it are left out, which changes nothing within it), in order,
-    // each numbered by the result's primitive; with firstOnly, up to the first with t > tFrom.
-    void resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOnly,
-                         LineCrossings& crossings) const;
+    // Visits the result's crossings along the ray's line that the children met within
+    // tFrom < t < tTo make (those met only outside it are left out, which changes nothing within
+    // it), in order, each numbered by the result's primitive: visit(crossing, entering) returns
+    // whether to stop there.
+    template <typename Visit>
+    void sweepLine(const Ray& ray, double tFrom, double tTo, Visit&& visit) const;
 
     Operation operation_;
     std::vector<std::unique_ptr<Shape>> children_;
