@@ -54,37 +54,40 @@ private:
 thread_local std::vector<std::unique_ptr<Sweep>> SweepLease::pool_;
 thread_local std::size_t SweepLease::level_ = 0;
 
-// The part tLow < t < tHigh of a ray's line, tested against boxes (in double; the boxes already
-// padded). The reciprocal of the direction is taken once for all the children of a query.
+// The part tLow < t < tHigh of a ray's line, tested against boxes by the BVH's slab test (the
+// boxes are padded far beyond its rounding). The reciprocal of the direction, and the corner of a
+// box the line enters by, are found once for all the children of a query.
 class LineWindow {
 public:
-    LineWindow(const Ray& ray, double tLow, double tHigh) : tLow_(tLow), tHigh_(tHigh) {
+    LineWindow(const Ray& ray, double tLow, double tHigh)
+        : tLow_(static_cast<float>(tLow)), tHigh_(static_cast<float>(tHigh)) {
         for (int axis = 0; axis < 3; ++axis) {
             origin_[axis] = ray.origin[axis];
-            direction_[axis] = ray.direction[axis];
-            inverse_[axis] = direction_[axis] != 0 ? 1 / direction_[axis] : 0;
+            // A zero component gives an infinite reciprocal of the zero's sign.
+            inverse_[axis] = 1.0f / ray.direction[axis];
+            entryIsMax_[axis] = inverse_[axis] < 0;
         }
     }
 
     // Whether the line passes through the box somewhere in the window.
     bool meets(const Bounds3& box) const {
-        double tEnter = tLow_, tExit = tHigh_;
+        float tEnter = tLow_, tExit = tHigh_;
         for (int axis = 0; axis < 3; ++axis) {
-            const double lo = box.min[axis] - origin_[axis], hi = box.max[axis] - origin_[axis];
-            if (direction_[axis] == 0) {
-                if (lo > 0 || hi < 0) return false;
-                continue;
-            }
-            const double t0 = lo * inverse_[axis], t1 = hi * inverse_[axis];
-            tEnter = std::max(tEnter, std::min(t0, t1));
-            tExit = std::min(tExit, std::max(t0, t1));
+            const float entry = (entryIsMax_[axis] ? box.max : box.min)[axis];
+            const float exit = (entryIsMax_[axis] ? box.min : box.max)[axis];
+            const float tNear = (entry - origin_[axis]) * inverse_[axis];
+            const float tFar = (exit - origin_[axis]) * inverse_[axis];
+            // NaN (0 * infinity: the line in a slab's plane) leaves the window unchanged.
+            tEnter = tNear > tEnter ? tNear : tEnter;
+            tExit = tFar < tExit ? tFar : tExit;
         }
         return tEnter <= tExit;
     }
 
 private:
-    double origin_[3], direction_[3], inverse_[3];
-    double tLow_, tHigh_;
+    float origin_[3], inverse_[3];
+    bool entryIsMax_[3];
+    float tLow_, tHigh_;
 };
 
 }  // namespace
