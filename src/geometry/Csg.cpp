@@ -17,12 +17,21 @@ constexpr double kCoincident = 2e-6;
 // its centre decides.
 constexpr int kEdgeRefinement = 3;
 
+// A child's crossing as the sweep orders it: a key of the sort, and what the sweep reads.
+struct SweepEvent {
+    double t;
+    std::uint32_t primitive;  // the result's
+    std::uint32_t child;
+    std::uint32_t index;  // of the crossing in Sweep::events
+    bool entering;
+};
+
 // What a sweep along a line needs, kept from ray to ray by each thread: one set per level of
 // nesting, since a child that is a CSG sweeps while its parent's sweep is under way.
 struct Sweep {
     LineCrossings events;
+    std::vector<SweepEvent> order;
     std::vector<int> depth;
-    std::vector<bool> inside;
 };
 
 class SweepLease {
@@ -45,23 +54,41 @@ private:
 thread_local std::vector<std::unique_ptr<Sweep>> SweepLease::pool_;
 thread_local std::size_t SweepLease::level_ = 0;
 
-// Whether the ray's line passes through the box (in double; the box already padded) somewhere
-// with tLow < t < tHigh.
-bool lineMeetsBox(const Ray& ray, const Bounds3& box, double tLow, double tHigh) {
-    double tEnter = tLow, tExit = tHigh;
-    for (int axis = 0; axis < 3; ++axis) {
-        const double o = ray.origin[axis], d = ray.direction[axis];
-        const double lo = box.min[axis], hi = box.max[axis];
-        if (d == 0) {
-            if (o < lo || o > hi) return false;
-            continue;
+// The part tLow < t < tHigh of a ray's line, tested against boxes by the BVH's slab test (the
+// boxes are padded far beyond its rounding). The reciprocal of the direction, and the corner of a
+// box the line enters by, are found once for all the children of a query.
+class LineWindow {
+public:
+    LineWindow(const Ray& ray, double tLow, double tHigh)
+        : tLow_(static_cast<float>(tLow)), tHigh_(static_cast<float>(tHigh)) {
+        for (int axis = 0; axis < 3; ++axis) {
+            origin_[axis] = ray.origin[axis];
+            // A zero component gives an infinite reciprocal of the zero's sign.
+            inverse_[axis] = 1.0f / ray.direction[axis];
+            entryIsMax_[axis] = inverse_[axis] < 0;
         }
-        const double t0 = (lo - o) / d, t1 = (hi - o) / d;
-        tEnter = std::max(tEnter, std::min(t0, t1));
-        tExit = std::min(tExit, std::max(t0, t1));
     }
-    return tEnter <= tExit;
-}
+
+    // Whether the line passes through the box somewhere in the window.
+    bool meets(const Bounds3& box) const {
+        float tEnter = tLow_, tExit = tHigh_;
+        for (int axis = 0; axis < 3; ++axis) {
+            const float entry = (entryIsMax_[axis] ? box.max : box.min)[axis];
+            const float exit = (entryIsMax_[axis] ? box.min : box.max)[axis];
+            const float tNear = (entry - origin_[axis]) * inverse_[axis];
+            const float tFar = (exit - origin_[axis]) * inverse_[axis];
+            // NaN (0 * infinity: the line in a slab's plane) leaves the window unchanged.
+            tEnter = tNear > tEnter ? tNear : tEnter;
+            tExit = tFar < tExit ? tFar : tExit;
+        }
+        return tEnter <= tExit;
+    }
+
+private:
+    float origin_[3], inverse_[3];
+    bool entryIsMax_[3];
+    float tLow_, tHigh_;
+};
 
 }  // namespace
 
@@ -86,6 +113,7 @@ Csg::Csg(Operation operation, std::vector<std::unique_ptr<Shape>> children,
     }
     // An empty intersection hits nothing; any box will do.
     if (bounds_.isEmpty()) bounds_ = children_.front()->bounds();
+    diagonalLength_ = length(bounds_.diagonal());
 }
 
 const std::vector<std::string>& Csg::operationNames() {
@@ -99,87 +127,96 @@ std::size_t Csg::childOf(std::uint32_t primitive) const {
     return static_cast<std::size_t>(after - firstPrimitive_.begin()) - 1;
 }
 
-bool Csg::inResult(const std::vector<bool>& insideChild) const {
+bool Csg::inResult(std::size_t insideCount, bool insideFirst) const {
     switch (operation_) {
         case Operation::kUnion:
-            return std::find(insideChild.begin(), insideChild.end(), true) != insideChild.end();
+            return insideCount > 0;
         case Operation::kIntersection:
-            return std::find(insideChild.begin(), insideChild.end(), false) == insideChild.end();
+            return insideCount == children_.size();
         case Operation::kDifference:
-            return insideChild.front() &&
-                   std::find(insideChild.begin() + 1, insideChild.end(), true) == insideChild.end();
+            return insideFirst && insideCount == 1;
     }
     return false;
 }
 
 bool Csg::onResultSurface(std::size_t k, const Vec3& p) const {
-    // (Asked for every light sample: the thread's buffer, not a new vector.)
-    const SweepLease lease;
-    std::vector<bool>& inside = (*lease).inside;
-    inside.assign(children_.size(), false);
+    std::size_t othersInside = 0;
+    bool firstInside = false;
     for (std::size_t i = 0; i < children_.size(); ++i)
-        if (i != k) inside[i] = children_[i]->contains(p);
-    inside[k] = true;
-    const bool withK = inResult(inside);
-    inside[k] = false;
-    return withK != inResult(inside);
+        if (i != k && children_[i]->contains(p)) {
+            ++othersInside;
+            firstInside = firstInside || i == 0;
+        }
+    return inResult(othersInside + 1, firstInside || k == 0) != inResult(othersInside, firstInside);
 }
 
-void Csg::resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOnly,
-                          LineCrossings& crossings) const {
+template <typename Visit>
+void Csg::sweepLine(const Ray& ray, double tFrom, double tTo, Visit&& visit) const {
     const SweepLease lease;
     Sweep& sweep = *lease;
-    // The children's crossings, numbered as the result's primitives (which tells their child).
+    // The children's crossings, numbered as the result's primitives.
     LineCrossings& events = sweep.events;
+    std::vector<SweepEvent>& order = sweep.order;
     events.clear();
+    order.clear();
+    const LineWindow window(ray, tFrom, tTo);
     for (std::size_t k = 0; k < children_.size(); ++k) {
         const std::size_t first = events.size();
         // A child the line meets only before tFrom or after tTo is outside all along the
         // window: its crossings change nothing there.
-        if (lineMeetsBox(ray, childBounds_[k], tFrom, tTo)) children_[k]->crossLine(ray, events);
+        if (window.meets(childBounds_[k])) children_[k]->crossLine(ray, events);
         // Nothing of an intersection, or of a difference, lies off its first child.
         if (events.size() == first && (operation_ == Operation::kIntersection ||
                                        (operation_ == Operation::kDifference && k == 0)))
             return;
-        for (std::size_t i = first; i < events.size(); ++i)
-            events[i].crossing.primitive += firstPrimitive_[k];
+        for (std::size_t i = first; i < events.size(); ++i) {
+            SurfaceCrossing& c = events[i].crossing;
+            c.primitive += firstPrimitive_[k];
+            order.push_back({c.t, c.primitive, static_cast<std::uint32_t>(k),
+                             static_cast<std::uint32_t>(i), events[i].entering});
+        }
     }
-    // In order of t; at equal t, in the children's order.
-    std::sort(events.begin(), events.end(), [](const LineCrossing& a, const LineCrossing& b) {
-        return a.crossing.t < b.crossing.t ||
-               (a.crossing.t == b.crossing.t && a.crossing.primitive < b.crossing.primitive);
-    });
+    // In order of t; at equal t, in the children's order. By insertion: there are few, and each
+    // child's come in order already.
+    for (std::size_t i = 1; i < order.size(); ++i) {
+        const SweepEvent event = order[i];
+        std::size_t j = i;
+        for (; j > 0 && (event.t < order[j - 1].t ||
+                         (event.t == order[j - 1].t && event.primitive < order[j - 1].primitive));
+             --j)
+            order[j] = order[j - 1];
+        order[j] = event;
+    }
 
     // The rounding of a crossing's t grows with the distances from the origin it was found from.
     const double speed = length(Vec3d(ray.direction));
-    const double reach =
-        (static_cast<double>(maxComponent(abs(ray.origin))) + length(bounds_.diagonal())) /
-        (speed > 0 ? speed : 1);
+    const double reach = (static_cast<double>(maxComponent(abs(ray.origin))) + diagonalLength_) /
+                         (speed > 0 ? speed : 1);
+    // Each child's depth, and how many children the line is in (at t = -infinity, none).
     sweep.depth.assign(children_.size(), 0);
-    sweep.inside.assign(children_.size(), false);
-    bool inBefore = false;  // at t = -infinity, outside every child
-    for (std::size_t first = 0; first < events.size();) {
-        const double t0 = events[first].crossing.t;
+    std::size_t insideCount = 0;
+    bool inBefore = false;
+    for (std::size_t first = 0; first < order.size();) {
+        const double t0 = order[first].t;
         const double tolerance = kCoincident * (std::abs(t0) + reach);
         std::size_t end = first;
-        for (; end < events.size() && events[end].crossing.t - t0 <= tolerance; ++end) {
-            const std::size_t k = childOf(events[end].crossing.primitive);
-            sweep.depth[k] += events[end].entering ? 1 : -1;
-            sweep.inside[k] = sweep.depth[k] > 0;
+        for (; end < order.size() && order[end].t - t0 <= tolerance; ++end) {
+            int& depth = sweep.depth[order[end].child];
+            const bool wasInside = depth > 0;
+            depth += order[end].entering ? 1 : -1;
+            if (wasInside != (depth > 0)) insideCount += wasInside ? -1 : 1;
         }
-        const bool inAfter = inResult(sweep.inside);
+        const bool inAfter = inResult(insideCount, sweep.depth.front() > 0);
         if (inAfter != inBefore) {
             // The surface is that of a child whose own step goes the result's way (of those in
             // the event: coincident faces of the same side give the same point).
             std::size_t chosen = first;
             for (std::size_t i = first; i < end; ++i)
-                if ((events[i].entering != isCarving(childOf(events[i].crossing.primitive))) ==
-                    inAfter) {
+                if ((order[i].entering != isCarving(order[i].child)) == inAfter) {
                     chosen = i;
                     break;
                 }
-            crossings.push_back({events[chosen].crossing, inAfter});
-            if (firstOnly && events[chosen].crossing.t > tFrom) return;
+            if (visit(events[order[chosen].index].crossing, inAfter)) return;
             inBefore = inAfter;
         }
         first = end;
@@ -187,18 +224,21 @@ void Csg::resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOn
 }
 
 std::optional<SurfaceCrossing> Csg::cross(const Ray& ray, float tMax) const {
-    thread_local LineCrossings crossings;
-    crossings.clear();
-    resultCrossings(ray, 0, tMax, true, crossings);
-    if (crossings.empty()) return std::nullopt;
-    const SurfaceCrossing& last = crossings.back().crossing;
-    if (last.t > 0 && last.t < tMax) return last;
-    return std::nullopt;
+    std::optional<SurfaceCrossing> nearest;
+    sweepLine(ray, 0, tMax, [&](const SurfaceCrossing& surface, bool) {
+        if (surface.t <= 0) return false;  // behind the origin: on to the next
+        if (surface.t < tMax) nearest = surface;
+        return true;
+    });
+    return nearest;
 }
 
 void Csg::crossLine(const Ray& ray, LineCrossings& crossings) const {
     constexpr double kWholeLine = std::numeric_limits<double>::infinity();
-    resultCrossings(ray, -kWholeLine, kWholeLine, false, crossings);
+    sweepLine(ray, -kWholeLine, kWholeLine, [&](const SurfaceCrossing& surface, bool entering) {
+        crossings.push_back({surface, entering});
+        return false;
+    });
 }
 
 Hit Csg::record(const Ray& ray, const SurfaceCrossing& crossing) const {

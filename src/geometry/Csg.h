@@ -45,8 +45,9 @@ public:
 private:
     // The child holding a primitive of the result, and the primitive's number in that child.
     std::size_t childOf(std::uint32_t primitive) const;
-    // Whether a point is in the result, given which children it is in.
-    bool inResult(const std::vector<bool>& insideChild) const;
+    // Whether a point is in the result, given how many children it is in and whether the first
+    // is one of them.
+    bool inResult(std::size_t insideCount, bool insideFirst) const;
     // Whether a point on child k's surface is on the result's surface: the result changes with
     // k's inside, the other children's taken at the point.
     bool onResultSurface(std::size_t k, const Vec3& p) const;
@@ -55,17 +56,19 @@ private:
     // Adds the parts of child k's facet that lie on the result's surface.
     void addVisibleParts(std::size_t k, const Tessellation::Facet& facet, int refinements,
                          std::vector<Tessellation::Facet>& facets) const;
-    // The result's crossings along the ray's line that the children met within tFrom < t < tTo
-    // make (those met only outside it are left out, which changes nothing within it), in order,
-    // each numbered by the result's primitive; with firstOnly, up to the first with t > tFrom.
-    void resultCrossings(const Ray& ray, double tFrom, double tTo, bool firstOnly,
-                         LineCrossings& crossings) const;
+    // Visits the result's crossings along the ray's line that the children met within
+    // tFrom < t < tTo make (those met only outside it are left out, which changes nothing within
+    // it), in order, each numbered by the result's primitive: visit(crossing, entering) returns
+    // whether to stop there.
+    template <typename Visit>
+    void sweepLine(const Ray& ray, double tFrom, double tTo, Visit&& visit) const;
 
     Operation operation_;
     std::vector<std::unique_ptr<Shape>> children_;
     std::vector<std::uint32_t> firstPrimitive_;  // per child, and the total at the end
     std::vector<Bounds3> childBounds_;           // a little larger than the children's
     Bounds3 bounds_;
+    float diagonalLength_;  // of bounds_, which the rounding of crossings' t grows with
 };
 
 }  // namespace lancer

@@ -53,9 +53,9 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     Hit& hit = *found;
     // Directions are unit vectors, so t is a distance.
     const float distance = path.distance + hit.t;
-    setFootprint(hit, ray.direction, path.footprint.widthAt(distance));
-
     const Material& material = *hit.material;
+    if (material.readsFootprint())
+        setFootprint(hit, ray.direction, path.footprint.widthAt(distance));
     const Vec3 wo = -normalize(ray.direction);
     // Shade the side the ray arrived on.
     const bool front = hit.frontFace(ray);

@@ -15,8 +15,14 @@
 
 namespace lancer {
 
-BlinnPhongMaterial::BlinnPhongMaterial(Parameters parameters)
-    : parameters_(std::move(parameters)) {}
+BlinnPhongMaterial::BlinnPhongMaterial(Parameters parameters) : parameters_(std::move(parameters)) {
+    const Parameters& p = parameters_;
+    bool read = false;
+    for (const auto& texture :
+         {p.diffuse, p.ambient, p.specularMap, p.reflectionMap, p.roughnessMap, p.emissionMap})
+        read = read || (texture && texture->readsFootprint());
+    setTexturesReadFootprint(read);
+}
 
 // The RGB complex indices of refraction that Mitsuba 3.9.1 (scalar_rgb) makes from its measured
 // spectra (resources/data/ior, after Palik's handbook), integrated against the CIE 1931 matching

@@ -17,6 +17,8 @@ public:
     BumpMap(std::shared_ptr<const Texture> heights, float scale);
 
     Vec3 normal(const Hit& hit) const override;
+    // Its differences span the footprint.
+    bool readsFootprint() const override { return true; }
 
 private:
     float height(const Hit& hit, float u, float v) const;

@@ -13,6 +13,8 @@ class ImageTexture final : public Texture {
 public:
     // The pyramid is shared, so that one file used by several materials is stored once.
     explicit ImageTexture(std::shared_ptr<const MipMap> mipmap);
+    // The footprint picks the MIP level.
+    bool readsFootprint() const override { return true; }
 
     // The footprint is the longer side of the parallelogram that one pixel covers in uv,
     // max(|(dudx, dvdx)|, |(dudy, dvdy)|): the scale factor of the OpenGL specification, which

@@ -28,6 +28,11 @@ Vec3 Material::shadingNormal(const Hit& hit, const Vec3& wo) const {
                      side * kBentNormalCosine * wo);
 }
 
+bool Material::readsFootprint() const {
+    return texturesReadFootprint_ || (shadingNormalMap_ && shadingNormalMap_->readsFootprint()) ||
+           (opacity_ && opacity_->readsFootprint());
+}
+
 bool Material::isCutAway(const Hit& hit) const {
     return opacity_ && opacity_->evaluate(hit).average() < 0.5f;
 }

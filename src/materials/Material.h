@@ -59,9 +59,18 @@ public:
     bool hasCutOuts() const { return opacity_ != nullptr; }
     bool isCutAway(const Hit& hit) const;
 
+    // Whether a look-up at a hit reads its uv footprint (a filtered image texture, a bump map):
+    // Whitted computes the footprint of the hits of those materials only.
+    bool readsFootprint() const;
+
+protected:
+    // For an implementation whose own textures read the footprint (said once, when it is made).
+    void setTexturesReadFootprint(bool read) { texturesReadFootprint_ = read; }
+
 private:
     std::shared_ptr<const ShadingNormalMap> shadingNormalMap_;
     std::shared_ptr<const Texture> opacity_;
+    bool texturesReadFootprint_ = false;
 };
 
 }  // namespace lancer

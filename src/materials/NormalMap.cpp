@@ -8,6 +8,10 @@ namespace lancer {
 
 NormalMap::NormalMap(std::shared_ptr<const Texture> texels) : texels_(std::move(texels)) {}
 
+bool NormalMap::readsFootprint() const {
+    return texels_->readsFootprint();
+}
+
 Vec3 NormalMap::normal(const Hit& hit) const {
     const Color c = texels_->evaluate(hit);
     const Vec3 tangentSpace(2 * c.r - 1, 2 * c.g - 1, 2 * c.b - 1);

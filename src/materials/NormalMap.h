@@ -16,6 +16,7 @@ public:
     explicit NormalMap(std::shared_ptr<const Texture> texels);
 
     Vec3 normal(const Hit& hit) const override;
+    bool readsFootprint() const override;
 
 private:
     std::shared_ptr<const Texture> texels_;

@@ -13,6 +13,8 @@ public:
     virtual ~ShadingNormalMap() = default;
     // The perturbed unit normal at the hit, on the side of hit.ns (which it replaces).
     virtual Vec3 normal(const Hit& hit) const = 0;
+    // Whether normal reads the hit's uv footprint (dudx...), which is then worth computing.
+    virtual bool readsFootprint() const = 0;
 };
 
 }  // namespace lancer

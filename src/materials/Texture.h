@@ -15,6 +15,8 @@ public:
     virtual Color average() const = 0;
     // Whether it is black everywhere, as far as the texture can tell without looking.
     virtual bool isBlack() const { return false; }
+    // Whether evaluate reads the hit's uv footprint (dudx...), which is then worth computing.
+    virtual bool readsFootprint() const { return false; }
 };
 
 }  // namespace lancer

@@ -31,6 +31,7 @@ private:
 
     std::unique_ptr<Filter> filter_;
     Distribution1D profileDistribution_;  // |profile| over [-radius, radius]
+    bool flat_;                           // whether the profile is the same everywhere
 };
 
 }  // namespace lancer

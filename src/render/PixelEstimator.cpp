@@ -169,7 +169,12 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
             // A single sample goes through the pixel centre, as a classic ray tracer's.
             const FilterSample film =
                 maxSamples_ == 1 ? FilterSample{{0, 0}, 1} : filterSampler_.sample(filterPoint);
-            const Vec2 lens = sampler.get2D();
+            // A pinhole's lens sample keeps its place among the requests, undrawn.
+            Vec2 lens;
+            if (camera.usesLensSample())
+                lens = sampler.get2D();
+            else
+                sampler.skip2D();
             const std::optional<Ray> ray =
                 camera.generateRay(static_cast<float>(x) + 0.5f + film.offset.x,
                                    static_cast<float>(y) + 0.5f + film.offset.y, settings.width,

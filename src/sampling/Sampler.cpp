@@ -100,6 +100,10 @@ Vec2 Sampler::get2D() {
         toUnitFloat(reverseBits(laineKarrasPermutation(reversedSobolDimension1(index), ySeed)))};
 }
 
+void Sampler::skip2D() {
+    nextRequestSeeds(RequestKind::point);
+}
+
 float Sampler::get1D() {
     const auto [indexSeed, valueSeed, unused] = nextRequestSeeds(RequestKind::value).seeds;
     // The scrambled index, reversed, is the van der Corput point, which is then scrambled.

@@ -27,6 +27,9 @@ public:
     Vec2 get2D();
     // The next number of the current sample, in [0,1).
     float get1D();
+    // Passes over the next 2D point unseen (a pinhole's lens sample): the requests after it get
+    // the points they would get after get2D.
+    void skip2D();
 
 private:
     enum class RequestKind : std::uint8_t { point, value };

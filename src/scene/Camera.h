@@ -24,6 +24,8 @@ public:
     // circle). lensSample in [0,1)^2 picks the point on a lens.
     virtual std::optional<Ray> generateRay(float px, float py, int width, int height,
                                            const Vec2& lensSample) const = 0;
+    // Whether generateRay reads lensSample (a thin lens); for the others it is not drawn.
+    virtual bool usesLensSample() const { return false; }
 
     // How a pixel's footprint starts and grows along its rays, for texture filtering.
     virtual RayCone pixelCone(int width, int height) const = 0;

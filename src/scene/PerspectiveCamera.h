@@ -20,6 +20,7 @@ public:
 
     std::optional<Ray> generateRay(float px, float py, int width, int height,
                                    const Vec2& lensSample) const override;
+    bool usesLensSample() const override { return aperture_ > 0; }
     // The angle between the rays through neighbouring pixel centres near the image centre.
     RayCone pixelCone(int width, int height) const override;
     std::unique_ptr<Camera> orbited(const CameraFrame& frame, float distanceScale) const override;

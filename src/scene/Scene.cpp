@@ -1,6 +1,7 @@
 #include "scene/Scene.h"
 
 #include "accel/Bvh.h"
+#include "accel/WideBvh.h"
 #include "geometry/Shape.h"
 #include "lights/EnvironmentLight.h"
 #include "lights/Light.h"
@@ -8,7 +9,7 @@
 
 namespace lancer {
 
-Scene::Scene() : bvh_(std::make_unique<Bvh>()) {}
+Scene::Scene() : bvh_(std::make_unique<WideBvh>()) {}
 Scene::~Scene() = default;
 Scene::Scene(Scene&&) noexcept = default;
 Scene& Scene::operator=(Scene&&) noexcept = default;
@@ -42,12 +43,18 @@ void Scene::buildAccelerationStructure() {
     bounds.reserve(boundedShapes_.size());
     for (const auto& shape : boundedShapes_)
         bounds.push_back(shape->bounds());
-    bvh_ = std::make_unique<Bvh>(bounds);
+    // One shape per leaf: testing a shape (a csg, a mesh with its own hierarchy) costs far more
+    // than testing its box, which the heuristic cannot know. Collapsed 8-wide, a scene of a few
+    // objects is one node, whose boxes a ray meets in one SIMD test.
+    const Bvh binary(bounds, 1);
     std::vector<std::unique_ptr<Shape>> ordered;
     ordered.reserve(boundedShapes_.size());
-    for (std::uint32_t index : bvh_->primitiveOrder())
+    for (std::uint32_t index : binary.primitiveOrder())
         ordered.push_back(std::move(boundedShapes_[index]));
     boundedShapes_ = std::move(ordered);
+    // A leaf is known by its first shape in that order.
+    bvh_ =
+        std::make_unique<WideBvh>(binary, [](std::uint32_t first, std::uint32_t) { return first; });
 }
 
 void Scene::addLight(std::unique_ptr<Light> light) {
@@ -85,13 +92,18 @@ std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {
 std::optional<SceneCrossing> Scene::cross(const Ray& ray, float tMax) const {
     // The candidates only cross; the caller records the nearest.
     std::optional<SceneCrossing> nearest;
-    bvh_->intersect(ray, tMax, [&](std::uint32_t k, const Ray& r, float& tFar) {
-        const std::optional<SurfaceCrossing> crossing = boundedShapes_[k]->cross(r, tFar);
-        if (!crossing) return false;
-        nearest = SceneCrossing{boundedShapes_[k].get(), *crossing};
-        tFar = static_cast<float>(crossing->t);
-        return true;
-    });
+    const auto crossLeaf = [&](std::uint32_t first, std::uint32_t count, float& tFar) {
+        bool found = false;
+        for (std::uint32_t k = first; k < first + count; ++k)
+            if (const std::optional<SurfaceCrossing> crossing =
+                    boundedShapes_[k]->cross(ray, tFar)) {
+                nearest = SceneCrossing{boundedShapes_[k].get(), *crossing};
+                tFar = static_cast<float>(crossing->t);
+                found = true;
+            }
+        return found;
+    };
+    bvh_->intersect(ray, tMax, crossLeaf, [](std::uint32_t) {});
     for (const auto& shape : unboundedShapes_) {
         if (const std::optional<SurfaceCrossing> crossing = shape->cross(ray, tMax)) {
             nearest = SceneCrossing{shape.get(), *crossing};
@@ -109,9 +121,12 @@ bool Scene::occluded(const Ray& ray, float tMax) const {
     if (hasCutOuts_) return intersect(ray, tMax).has_value();  // a blocker may be cut away
     for (const auto& shape : unboundedShapes_)
         if (shape->occluded(ray, tMax)) return true;
-    return bvh_->occluded(ray, tMax, [&](std::uint32_t k, const Ray& r, float tFar) {
-        return boundedShapes_[k]->occluded(r, tFar);
-    });
+    const auto occludedLeaf = [&](std::uint32_t first, std::uint32_t count, float tFar) {
+        for (std::uint32_t k = first; k < first + count; ++k)
+            if (boundedShapes_[k]->occluded(ray, tFar)) return true;
+        return false;
+    };
+    return bvh_->occluded(ray, tMax, occludedLeaf, [](std::uint32_t) {});
 }
 
 }  // namespace lancer

@@ -16,7 +16,7 @@
 
 namespace lancer {
 
-class Bvh;
+class WideBvh;
 class EnvironmentLight;
 class Light;
 class Material;
@@ -108,7 +108,7 @@ private:
     std::vector<std::unique_ptr<Material>> materials_;
     std::vector<std::unique_ptr<Shape>> boundedShapes_;  // in the BVH's leaf order once built
     std::vector<std::unique_ptr<Shape>> unboundedShapes_;
-    std::unique_ptr<Bvh> bvh_;  // over the bounded shapes
+    std::unique_ptr<WideBvh> bvh_;  // over the bounded shapes
     bool hasTransmissiveMaterial_ = false;
     bool hasCutOuts_ = false;
     Statistics statistics_;

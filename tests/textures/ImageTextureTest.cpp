@@ -6,7 +6,11 @@
 
 #include "TextureTestSupport.h"
 #include "io/ImageReader.h"
+#include "materials/BlinnPhongMaterial.h"
+#include "materials/BumpMap.h"
+#include "materials/CheckerTexture.h"
 #include "materials/ImageTexture.h"
+#include "materials/NormalMap.h"
 #include "math/Srgb.h"
 #include "scene/InputError.h"
 
@@ -61,6 +65,30 @@ TEST_F(ImageTextureTest, FootprintMeasuresDiagonalDerivativesByTheirLength) {
 TEST_F(ImageTextureTest, SharesItsMipMap) {
     const ImageTexture other(mipmap);
     EXPECT_EQ(&texture.mipmap(), &other.mipmap());
+}
+
+TEST_F(ImageTextureTest, MaterialsReadTheFootprintOnlyThroughAFilteredTextureOrABumpMap) {
+    // (Whitted computes a hit's footprint only where it is read.)
+    const auto image = std::make_shared<ImageTexture>(mipmap);
+    const auto checker = std::make_shared<CheckerTexture>(Color(1), Color(0), 1);
+    EXPECT_TRUE(image->readsFootprint());
+    EXPECT_FALSE(checker->readsFootprint());
+    EXPECT_FALSE(BlinnPhongMaterial().readsFootprint());
+    BlinnPhongMaterial::Parameters checkered;
+    checkered.diffuse = checker;
+    EXPECT_FALSE(BlinnPhongMaterial(checkered).readsFootprint());
+    BlinnPhongMaterial::Parameters glossyMap;
+    glossyMap.specularMap = image;
+    EXPECT_TRUE(BlinnPhongMaterial(glossyMap).readsFootprint());
+    BlinnPhongMaterial bumped, mapped, mappedByChecker, cutOut;
+    bumped.setShadingNormalMap(std::make_shared<BumpMap>(checker, 0.1f));
+    EXPECT_TRUE(bumped.readsFootprint());
+    mapped.setShadingNormalMap(std::make_shared<NormalMap>(image));
+    EXPECT_TRUE(mapped.readsFootprint());
+    mappedByChecker.setShadingNormalMap(std::make_shared<NormalMap>(checker));
+    EXPECT_FALSE(mappedByChecker.readsFootprint());
+    cutOut.setOpacity(image);
+    EXPECT_TRUE(cutOut.readsFootprint());
 }
 
 TEST(ImageTextureLoadTest, LoadsAFileIntoAMipMap) {

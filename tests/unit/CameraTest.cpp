@@ -106,6 +106,8 @@ TEST(CameraTest, SameImagePointAtAnyResolutionGivesTheSameRay) {
 
 TEST(CameraTest, ZeroApertureIgnoresTheLensSample) {
     const PerspectiveCamera camera = kOblique.camera(0, 3);
+    EXPECT_FALSE(camera.usesLensSample()) << "so that it is not drawn";
+    EXPECT_TRUE(kOblique.camera(0.1f, 3).usesLensSample());
     Random random(61);
     for (int i = 0; i < 100; ++i) {
         const Vec2 lens(static_cast<float>(random.uniform()), static_cast<float>(random.uniform()));

@@ -370,6 +370,99 @@ TEST(Csg, PatchesCoverOnlyTheResultsSurfaceFacingOut) {
     EXPECT_NEAR(area, expected, 0.02 * expected);
 }
 
+// A random solid on a grid of half units, so that faces, centres and rims of different
+// children coincide: boxes, spheres, cylinders along an axis, and CSGs of 2 to 4 of them (of any
+// operation) nested up to `levels` deep.
+std::unique_ptr<Shape> randomSolid(Random& random, int levels) {
+    const auto onGrid = [&](double lo, double hi) {
+        return 0.5f * static_cast<float>(std::floor(random.uniform(2 * lo, 2 * hi + 1)));
+    };
+    const auto gridPoint = [&] { return Vec3(onGrid(-1, 1), onGrid(-1, 1), onGrid(-1, 1)); };
+    switch (static_cast<int>(random.uniform(0, levels > 0 ? 4 : 3))) {
+        case 0: {
+            const Vec3 corner = gridPoint();
+            return std::make_unique<Box>(
+                corner, corner + Vec3(onGrid(0.5, 2), onGrid(0.5, 2), onGrid(0.5, 2)), &kOuter);
+        }
+        case 1:
+            return std::make_unique<Sphere>(gridPoint(), onGrid(0.5, 1.5), &kOuter);
+        case 2: {
+            const Vec3 base = gridPoint();
+            Vec3 top = base;
+            top[static_cast<int>(random.uniform(0, 3))] += onGrid(0.5, 2);
+            return std::make_unique<Cylinder>(base, top, onGrid(0.5, 1), false, &kInner);
+        }
+        default: {
+            std::vector<std::unique_ptr<Shape>> children;
+            const int count = static_cast<int>(random.uniform(2, 5));
+            for (int k = 0; k < count; ++k)
+                children.push_back(randomSolid(random, levels - 1));
+            const auto operation =
+                static_cast<Csg::Operation>(static_cast<int>(random.uniform(0, 3)));
+            return std::make_unique<Csg>(operation, std::move(children), &kOuter);
+        }
+    }
+}
+
+// The nearest crossing with 0 < t < tMax of the result's crossings of the whole line: what a
+// bounded query must find.
+std::optional<SurfaceCrossing> nearestOnLine(const Shape& shape, const Ray& ray, float tMax) {
+    LineCrossings line;
+    shape.crossLine(ray, line);
+    for (const LineCrossing& c : line)
+        if (c.crossing.t > 0) {
+            if (c.crossing.t < tMax) return c.crossing;
+            break;
+        }
+    return std::nullopt;
+}
+
+TEST(Csg, TheNearestHitIsTheFirstCrossingOfTheWholeLineAhead) {
+    // Rays from outside, from inside and from the surfaces, some along the grid's planes, with
+    // and without a bound, through nested CSGs of every operation.
+    Random random(37);
+    int hits = 0, fromSurfaces = 0;
+    for (int solid = 0; solid < 300; ++solid) {
+        const auto shape = randomSolid(random, 2 + solid % 2);
+        for (int i = 0; i < 200; ++i) {
+            const Vec3 origin = random.pointInBox(3);
+            Vec3 direction = normalize(random.pointInBox(1) - origin);
+            if (i % 4 == 0) {
+                direction = Vec3(0);
+                direction[i % 3] = random.uniform() < 0.5 ? -1 : 1;
+            }
+            Ray ray{origin, direction};
+            if (i % 4 == 1)
+                ray.origin = Vec3(std::round(ray.origin.x * 2) / 2, ray.origin.y,
+                                  std::round(ray.origin.z * 2) / 2);
+            const float tMax = i % 3 == 0 ? kInfinity : static_cast<float>(random.uniform(0, 6));
+            const std::optional<SurfaceCrossing> nearest = shape->cross(ray, tMax);
+            const std::optional<SurfaceCrossing> expected = nearestOnLine(*shape, ray, tMax);
+            ASSERT_EQ(nearest.has_value(), expected.has_value())
+                << "solid " << solid << ", ray " << i;
+            if (!nearest) continue;
+            ++hits;
+            EXPECT_EQ(nearest->t, expected->t) << "solid " << solid << ", ray " << i;
+            EXPECT_EQ(nearest->primitive, expected->primitive)
+                << "solid " << solid << ", ray " << i;
+            // On from the point found, into the solid or out of it.
+            const Hit hit = shape->record(ray, *nearest);
+            const Ray spawned = hit.spawnRay(random.unitVector());
+            const std::optional<SurfaceCrossing> next = shape->cross(spawned, kInfinity);
+            const std::optional<SurfaceCrossing> nextExpected =
+                nearestOnLine(*shape, spawned, kInfinity);
+            ASSERT_EQ(next.has_value(), nextExpected.has_value())
+                << "solid " << solid << ", ray " << i;
+            if (next) {
+                EXPECT_EQ(next->t, nextExpected->t) << "solid " << solid << ", ray " << i;
+                ++fromSurfaces;
+            }
+        }
+    }
+    EXPECT_GT(hits, 10000);
+    EXPECT_GT(fromSurfaces, 5000);
+}
+
 TEST(Csg, OnlyClosedMeshesAreSolids) {
     TriangleMesh open;
     open.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};

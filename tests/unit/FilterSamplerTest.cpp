@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "math/Distribution1D.h"
 #include "render/Filter.h"
 #include "render/FilterSampler.h"
 #include "scene/FilterSettings.h"
@@ -144,6 +145,24 @@ TEST(FilterSamplerBoxTest, TheDefaultBoxMapsThePointOntoThePixelWithWeightOne) {
         EXPECT_NEAR(s.offset.x, u - 0.5f, 1e-6f);
         EXPECT_NEAR(s.offset.y, 0.5f - u / 2, 1e-6f);
         EXPECT_LT(s.offset.x, 0.5f);
+    }
+}
+
+TEST(FilterSamplerBoxTest, BoxesOfAnyRadiusSampleAsTheirTableToTheBit) {
+    // (The sampler skips the table's search for a flat profile.)
+    for (const float radius : {0.5f, 1.0f, 1.5f, 0.7f}) {
+        const FilterSampler box(Filter::create(FilterSettings{"box", radius}));
+        const Distribution1D table(std::vector<float>(256, box.filter().profile(0)));
+        std::mt19937 random(5);
+        for (int i = 0; i < 100000; ++i) {
+            const float u = std::uniform_real_distribution<float>(0, 1)(random);
+            const FilterSample s = box.sample({u, u});
+            float density = 0;
+            const float x = -radius + 2 * radius * table.sampleContinuous(u, &density);
+            ASSERT_EQ(s.offset.x, x) << "radius " << radius << ", u " << u;
+            const float w = box.filter().profile(x) * (2 * radius) / density;
+            ASSERT_EQ(s.weight, w * w);
+        }
     }
 }
 

@@ -120,6 +120,20 @@ TEST(SamplerTest, SameSeedPixelAndSampleGiveTheSameNumbers) {
     }
 }
 
+TEST(SamplerTest, APointPassedOverLeavesTheRequestsAfterItTheirPoints) {
+    // (A pinhole camera's lens sample is passed over.)
+    Sampler drawn(7, 12, 34), skipped(7, 12, 34);
+    for (int i = 0; i < 16; ++i) {
+        drawn.startSample(i);
+        skipped.startSample(i);
+        EXPECT_EQ(drawn.get2D(), skipped.get2D());
+        drawn.get2D();
+        skipped.skip2D();
+        EXPECT_EQ(drawn.get2D(), skipped.get2D());
+        EXPECT_EQ(drawn.get1D(), skipped.get1D());
+    }
+}
+
 TEST(SamplerTest, ASampleDoesNotDependOnTheSamplesBeforeIt) {
     // Threads may render a pixel's samples in any order, or only some of them.
     Sampler inOrder(3, 5, 9), direct(3, 5, 9);
