@@ -52,14 +52,14 @@ constexpr std::size_t kMostElements = std::size_t{1} << 23;
 constexpr std::size_t kMostLinks = std::size_t{1} << 25;
 constexpr std::size_t kMostLeafTerms = std::size_t{1} << 26;
 
-// A link with a cluster at an end joins ends at least this many times the sum of their bounding
-// spheres' radii apart (the point-to-point transfer's error falls with the square of that
-// ratio); nearer ends are split.
-// Unlike the element links, the cluster links are not resolved again at the leaves: their error
-// estimates count this many times, so that the many a leaf gathers from add up to little.
-constexpr double kClusterErrorWeight = 4;
-
+// A link with a cluster at an end joins ends whose bounding spheres are apart. Its relative error
+// is estimated as twice the sum of their radii over their distance where that distance is at
+// least kClusterSeparation times the sum (the point-to-point transfer's error falls with the
+// square of that ratio), and as kNearSpread where it is less: such a link is made only where what
+// it brings is negligible, since cluster links are not resolved again at the leaves as element
+// links are, and the many small ones a leaf gathers near it would add up.
 constexpr float kClusterSeparation = 3;
+constexpr float kNearSpread = 64;
 
 // Jacobi iterations and refinement passes stop at these, whatever the tolerances.
 constexpr int kMaxRefinementPasses = 12;
@@ -297,8 +297,7 @@ double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link) const {
                                   : mesh_.elements[link.receiver].reflectance.average();
     ClusterLink unoccluded = link;
     unoccluded.visibility = Color(1);
-    return kClusterErrorWeight * static_cast<double>(reflectance) *
-           clusterTransfer(unoccluded).average() *
+    return static_cast<double>(reflectance) * clusterTransfer(unoccluded).average() *
            (link.spread + (link.partlyVisible() ? 1.0f : 0.0f));
 }
 
@@ -375,14 +374,14 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
     const ClusterHierarchy::Extent source = clusters_.extent(mesh_, c.source);
     const Vec3 between = source.center - receiver.center;
     const float distance = length(between);
-    // Ends closer than this are too close for a point-to-point transfer.
-    if (!(distance > kClusterSeparation * (receiver.radius + source.radius))) return d;
+    const float radii = receiver.radius + source.radius;
+    if (!(distance > radii)) return d;  // the two overlap
     ClusterLink link;
     link.receiver = c.receiver;
     link.source = c.source;
     link.sourceCenter = source.center;
     link.distance2 = distance * distance;
-    link.spread = 2 * (receiver.radius + source.radius) / distance;
+    link.spread = distance >= kClusterSeparation * radii ? 2 * radii / distance : kNearSpread;
     link.visibility = Color(1);
     if (clusterLinkError(link) > epsilon_) return d;
     d.split = Element::kNone;

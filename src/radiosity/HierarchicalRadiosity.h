@@ -47,10 +47,12 @@ class VertexSmoothing;
 // instead from the top cluster's link to itself (see ClusterHierarchy): a cluster's link to
 // itself becomes its children's links to each other and to themselves, and a link with a cluster
 // at an end carries the irradiance its source delivers at the receiver's centre (each member
-// with its own cosine), received by each member of a receiving cluster with its own cosine. Its
-// error is the reflected radiosity times (twice the ends' radii over their distance, plus 1 when
-// partly occluded); the larger end is split (a cluster into its two children) until that is
-// below the threshold, so the link count grows near linearly with the elements.
+// with its own cosine), which every leaf under the receiver takes at its own centroid with its
+// own cosine. Its error is the reflected radiosity times (twice the ends' radii over their
+// distance, or 64 where they are less than 3 times their radii apart, plus 1 when partly
+// occluded); the larger end is split (a cluster into its two children) until that is below the
+// threshold, so the link count grows near linearly with the elements. Bright sources (lamps) are
+// never clustered.
 // Where a leaf's form factors add up to more than 1 (within the refinement's error), what they
 // bring is scaled back: no element gains power, and the iterations converge.
 // The result does not depend on the number of threads: every form factor and visibility is
