@@ -263,8 +263,8 @@ TEST(HierarchicalRadiosityTest, SameSolutionWhateverTheThreadCountWithClusters) 
     EXPECT_TRUE(solveWithThreads(1, true) == solveWithThreads(2, true));
 }
 
-TEST(HierarchicalRadiosityTest, ProgressReportsAndCancellation) {
-    Scene scene = furnaceBox();
+void expectProgressReportsAndCancellation(bool clusters) {
+    Scene scene = furnaceBox(clusters);
     HierarchicalRadiosity solver(scene);
     std::atomic<bool> cancel{false};
     int reports = 0;
@@ -282,6 +282,22 @@ TEST(HierarchicalRadiosityTest, ProgressReportsAndCancellation) {
     EXPECT_FALSE(solution);
     EXPECT_TRUE(sawIterating);
     EXPECT_GE(reports, 2);
+}
+
+TEST(HierarchicalRadiosityTest, ProgressReportsAndCancellation) {
+    expectProgressReportsAndCancellation(false);
+}
+
+TEST(HierarchicalRadiosityTest, ProgressReportsAndCancellationWithClusters) {
+    expectProgressReportsAndCancellation(true);
+}
+
+TEST(HierarchicalRadiosityTest, ClustersChangeTheFingerprint) {
+    // A solution saved without clusters is not loaded for the scene with them, nor the reverse.
+    Scene without = furnaceBox(false);
+    Scene with = furnaceBox(true);
+    EXPECT_NE(HierarchicalRadiosity(without).fingerprint(),
+              HierarchicalRadiosity(with).fingerprint());
 }
 
 TEST(HierarchicalRadiosityTest, AnotherFingerprintThanProgressive) {
