@@ -33,6 +33,7 @@ SETTINGS: list[tuple[str, dict]] = [
     ("hierarchical, refinement_tolerance 0.05", {"method": "hierarchical", "refinement_tolerance": 0.05}),
     ("hierarchical, refinement_tolerance 0.01", {"method": "hierarchical", "refinement_tolerance": 0.01}),
     ("hierarchical, visibility_rays 16", {"method": "hierarchical", "visibility_rays": 16}),
+    ("hierarchical, clusters", {"method": "hierarchical", "clusters": True}),
 ]
 
 

@@ -309,10 +309,11 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
         const RadiosityStatistics& s = solution.statistics();
         std::fprintf(
             stderr,
-            "lancer: radiosity%s: %llu patches, %llu elements, %llu shots, residual "
+            "lancer: radiosity%s: %llu patches, %llu elements, %s%llu shots, residual "
             "unshot power %.4g W (%.3g%% of %.4g W), solved in %.2f s\n",
             options.loadRadiosity ? (" loaded from " + *options.loadRadiosity).c_str() : "",
             static_cast<unsigned long long>(s.patches), static_cast<unsigned long long>(s.elements),
+            s.links > 0 ? (std::to_string(s.links) + " links, ").c_str() : "",
             static_cast<unsigned long long>(s.shots), s.residualPower,
             s.initialPower > 0 ? 100 * s.residualPower / s.initialPower : 0.0, s.initialPower,
             s.seconds);

@@ -711,10 +711,10 @@ void SceneLoader::Reader::loadAdaptive(const Node& render, const Node& node) {
 
 void SceneLoader::Reader::loadRadiosity(const Node& node) {
     requireObject(node, "\"radiosity\"");
-    checkKeys(
-        node, "\"radiosity\"",
-        {"method", "patch_size", "element_size", "threshold", "max_shots", "subdivision_levels",
-         "subdivision_tolerance", "visibility_rays", "refinement_tolerance", "final_gather"});
+    checkKeys(node, "\"radiosity\"",
+              {"method", "patch_size", "element_size", "threshold", "max_shots",
+               "subdivision_levels", "subdivision_tolerance", "visibility_rays",
+               "refinement_tolerance", "clusters", "final_gather"});
     RadiositySettings& r = scene_.settings().radiosity;
     if (node.has("method"))
         r.method =
@@ -736,6 +736,7 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
         r.subdivisionTolerance = readNumberAtLeast(node["subdivision_tolerance"], 0, false);
     if (node.has("refinement_tolerance"))
         r.refinementTolerance = readNumberAtLeast(node["refinement_tolerance"], 0, false);
+    if (node.has("clusters")) r.clusters = readFlag(node["clusters"]);
     if (node.has("visibility_rays")) {
         r.visibilityRays = readInt(node["visibility_rays"], 1);
         if (r.visibilityRays > 1024)

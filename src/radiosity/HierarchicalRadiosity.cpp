@@ -10,7 +10,9 @@
 #include "radiosity/SurfaceProbe.h"
 #include "radiosity/VertexSmoothing.h"
 #include "sampling/Sampling.h"
+#include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
+#include "scene/ShadowRays.h"
 #include "util/ParallelFor.h"
 
 namespace lancer {
@@ -50,6 +52,15 @@ constexpr std::size_t kMostElements = std::size_t{1} << 23;
 constexpr std::size_t kMostLinks = std::size_t{1} << 25;
 constexpr std::size_t kMostLeafTerms = std::size_t{1} << 26;
 
+// A link with a cluster at an end joins ends whose bounding spheres are apart. Its relative error
+// is estimated as twice the sum of their radii over their distance where that distance is at
+// least kClusterSeparation times the sum (the point-to-point transfer's error falls with the
+// square of that ratio), and as kNearSpread where it is less: such a link is made only where what
+// it brings is negligible, since cluster links are not resolved again at the leaves as element
+// links are, and the many small ones a leaf gathers near it would add up.
+constexpr float kClusterSeparation = 3;
+constexpr float kNearSpread = 64;
+
 // Jacobi iterations and refinement passes stop at these, whatever the tolerances.
 constexpr int kMaxRefinementPasses = 12;
 
@@ -81,18 +92,20 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene)
     RadiositySettings roots = settings_;
     roots.patchSize = roots.elementSize = patchSize_;
     mesh_ = PatchMesher(scene, roots).mesh();
-    fingerprint_ = hashValues(mesh_.fingerprint(scene, settings_), 0x4852u,  // "HR"
-                              std::bit_cast<std::uint32_t>(settings_.refinementTolerance));
+    fingerprint_ =
+        hashValues(mesh_.fingerprint(scene, settings_), 0x4852u,  // "HR"
+                   std::bit_cast<std::uint32_t>(settings_.refinementTolerance), settings_.clusters);
     for (const Patch& p : mesh_.patches)
         for (std::uint32_t e = p.firstElement; e < p.firstElement + p.elementCount; ++e)
             roots_.push_back(e);
+    if (settings_.clusters) clusters_ = ClusterHierarchy(mesh_, roots_);
 }
 
 std::size_t HierarchicalRadiosity::linkCount() const {
     std::size_t count = 0;
     for (const auto& l : links_)
         count += l.size();
-    return count;
+    return count + clusterLinks_.size();
 }
 
 void HierarchicalRadiosity::grow() {
@@ -104,6 +117,7 @@ void HierarchicalRadiosity::grow() {
     radiosity_.resize(n);
     gathered_.resize(n);
     links_.resize(n);
+    fromClusters_.resize(n);
     for (std::size_t e = old; e < n; ++e) {
         const Patch& patch = mesh_.patches[mesh_.elements[e].patch];
         for (std::size_t side = 0; side < 2; ++side)
@@ -177,6 +191,8 @@ double HierarchicalRadiosity::linkError(std::uint32_t receiver, const Link& link
 
 HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c,
                                                               std::uint64_t& rayCount) const {
+    if (ClusterHierarchy::isCluster(c.receiver) || ClusterHierarchy::isCluster(c.source))
+        return decideWithCluster(c, rayCount);
     Decision d;
     const Element& receiver = mesh_.elements[c.receiver];
     const Element& source = mesh_.elements[c.source];
@@ -244,6 +260,187 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
     return d;
 }
 
+std::uint32_t HierarchicalRadiosity::clusterSplitChoice(std::uint32_t receiver,
+                                                        std::uint32_t source) const {
+    const auto splits = [&](std::uint32_t node) {
+        return ClusterHierarchy::isCluster(node) || splittable(node);
+    };
+    if (!splits(receiver)) return source;
+    if (!splits(source)) return receiver;
+    return clusters_.extent(mesh_, receiver).radius >= clusters_.extent(mesh_, source).radius
+               ? receiver
+               : source;
+}
+
+double HierarchicalRadiosity::sourcePower(std::uint32_t node) const {
+    const auto power = [&](std::uint32_t e) {
+        return static_cast<double>((radiosity_[e][0] + radiosity_[e][1]).average()) *
+               mesh_.elements[e].area;
+    };
+    if (!ClusterHierarchy::isCluster(node)) return power(node);
+    double sum = 0;
+    for (std::uint32_t e : clusters_.members(clusters_.cluster(node)))
+        sum += power(e);
+    return sum;
+}
+
+Color HierarchicalRadiosity::clusterTransfer(const ClusterLink& link) const {
+    return link.visibility *
+           clusters_.irradianceAt(
+               mesh_, link.source, clusters_.extent(mesh_, link.receiver).center,
+               [&](std::uint32_t e, Side side) { return radiosity_[e][sideIndex(side)]; });
+}
+
+double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link) const {
+    const float reflectance = ClusterHierarchy::isCluster(link.receiver)
+                                  ? clusters_.cluster(link.receiver).reflectance
+                                  : mesh_.elements[link.receiver].reflectance.average();
+    ClusterLink unoccluded = link;
+    unoccluded.visibility = Color(1);
+    return static_cast<double>(reflectance) * clusterTransfer(unoccluded).average() *
+           (link.spread + (link.partlyVisible() ? 1.0f : 0.0f));
+}
+
+std::array<Color, 2> HierarchicalRadiosity::received(const Element& element,
+                                                     const ClusterLink& link,
+                                                     const Color& atCenter) {
+    const Vec3 toward = link.sourceCenter - element.centroid;
+    const float d2 = dot(toward, toward);
+    std::array<Color, 2> E;
+    if (!(d2 > 0)) return E;
+    const float cosine = dot(element.normal, toward) / std::sqrt(d2);
+    E[cosine > 0 ? 0 : 1] = (std::abs(cosine) * link.distance2 / d2) * atCenter;
+    return E;
+}
+
+Color HierarchicalRadiosity::clusterLinkPower(const ClusterLink& link) const {
+    const Color transfer = clusterTransfer(link);
+    const auto power = [&](std::uint32_t e) {
+        const std::array<Color, 2> E = received(mesh_.elements[e], link, transfer);
+        return mesh_.elements[e].area * (E[0] + E[1]);
+    };
+    if (!ClusterHierarchy::isCluster(link.receiver)) return power(link.receiver);
+    Color sum;
+    for (std::uint32_t e : clusters_.members(clusters_.cluster(link.receiver)))
+        sum += power(e);
+    return sum;
+}
+
+Color HierarchicalRadiosity::clusterVisibility(std::uint32_t receiver, std::uint32_t source,
+                                               int rays, std::uint64_t seed,
+                                               std::uint64_t& rayCount) const {
+    const Vec3 receiverCenter = clusters_.extent(mesh_, receiver).center;
+    const Vec3 sourceCenter = clusters_.extent(mesh_, source).center;
+    // On a curved surface, a chord's point moves onto the surface and a little off it towards
+    // the other end (as FormFactor's targets do).
+    const auto onSurface = [](ClusterHierarchy::SurfacePoint& s) {
+        if (s.patch->curved)
+            s.p = SurfaceProbe::onSurface(*s.patch, s.p) + (1e-4f * std::sqrt(s.patch->area)) * s.n;
+    };
+    Color visible;
+    int counted = 0;
+    for (int k = 0; k < rays; ++k) {
+        ClusterHierarchy::SurfacePoint from = clusters_.sample(
+            mesh_, receiver, sourceCenter, stratifiedPoint(0, 1, hashValues(seed, k, 1)));
+        ClusterHierarchy::SurfacePoint to =
+            clusters_.sample(mesh_, source, receiverCenter, stratifiedPoint(k, rays, seed));
+        onSurface(from);
+        onSurface(to);
+        // Points that face away from each other exchange nothing.
+        if (!(dot(from.n, to.p - from.p) > 0) || !(dot(to.n, from.p - to.p) > 0)) continue;
+        Hit at;
+        at.p = from.p;
+        at.ng = from.n;
+        at.pError = gamma(16) * abs(at.p);
+        LightSample towards;
+        towards.position = to.p;
+        towards.wi = normalize(to.p - from.p);
+        visible += ShadowRays::transmittance(scene_, at, towards, rayCount);
+        ++counted;
+    }
+    // No pair of points facing each other found: nothing tells of an obstacle.
+    return counted == 0 ? Color(1) : visible / static_cast<float>(counted);
+}
+
+HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
+    const Candidate& c, std::uint64_t& rayCount) const {
+    Decision d;
+    d.split = clusterSplitChoice(c.receiver, c.source);
+    if (c.receiver == c.source) return d;  // a cluster and itself: its children's pairs
+    // A bright source's light (a lamp's) goes through element links only: their visibility is
+    // traced with more rays, and again at the vertices, so that its shadows show.
+    if (sourcePower(c.source) >= kBrightSource * initialPower_) return d;
+    const ClusterHierarchy::Extent receiver = clusters_.extent(mesh_, c.receiver);
+    const ClusterHierarchy::Extent source = clusters_.extent(mesh_, c.source);
+    const Vec3 between = source.center - receiver.center;
+    const float distance = length(between);
+    const float radii = receiver.radius + source.radius;
+    if (!(distance > radii)) return d;  // the two overlap
+    ClusterLink link;
+    link.receiver = c.receiver;
+    link.source = c.source;
+    link.sourceCenter = source.center;
+    link.distance2 = distance * distance;
+    link.spread = distance >= kClusterSeparation * radii ? 2 * radii / distance : kNearSpread;
+    link.visibility = Color(1);
+    if (clusterLinkError(link) > epsilon_) return d;
+    d.split = Element::kNone;
+    // Nothing of the source faces the receiver (one plane): nothing to link.
+    if (clusters_
+            .irradianceAt(mesh_, c.source, receiver.center,
+                          [](std::uint32_t, Side) { return Color(1); })
+            .isBlack())
+        return d;
+    link.visibility = clusterVisibility(c.receiver, c.source, settings_.visibilityRays,
+                                        hashValues(c.receiver, c.source), rayCount);
+    if (clusterLinkError(link) > epsilon_) {
+        d.split = clusterSplitChoice(c.receiver, c.source);
+        return d;
+    }
+    if (!link.visibility.isBlack()) d.clusterLink = link;
+    return d;
+}
+
+std::array<Color, 2> HierarchicalRadiosity::clusterLinksAt(
+    const Element& at, std::uint32_t leaf, const std::vector<Color>& perLink) const {
+    std::array<Color, 2> E;
+    const auto take = [&](std::uint32_t l) {
+        const std::array<Color, 2> share = received(at, clusterLinks_[l], perLink[l]);
+        for (std::size_t side = 0; side < 2; ++side)
+            E[side] += share[side];
+    };
+    std::uint32_t root = leaf;
+    for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e]) {
+        for (std::uint32_t l : elementReceives_[e])
+            take(l);
+        root = e;
+    }
+    for (std::uint32_t c = clusters_.parentOf(root); c != Element::kNone;
+         c = clusters_.clusters()[c].parent)
+        for (std::uint32_t l : clusterReceives_[c])
+            take(l);
+    return E;
+}
+
+std::vector<std::array<Color, 2>> HierarchicalRadiosity::gatherThroughClusters(
+    const std::vector<Color>& perLink) const {
+    std::vector<std::array<Color, 2>> gathered(mesh_.elements.size());
+    if (clusters_.empty()) return gathered;
+    const std::vector<std::uint32_t> leaves = mesh_.leaves();
+    parallelFor(leaves.size(), 64, [&](std::size_t i) {
+        gathered[leaves[i]] = clusterLinksAt(mesh_.elements[leaves[i]], leaves[i], perLink);
+    });
+    return gathered;
+}
+
+void HierarchicalRadiosity::updateFromClusters() {
+    if (clusters_.empty()) return;
+    clusterTransfers_.resize(clusterLinks_.size());
+    parallelFor(clusterLinks_.size(), 64,
+                [&](std::size_t i) { clusterTransfers_[i] = clusterTransfer(clusterLinks_[i]); });
+    fromClusters_ = gatherThroughClusters(clusterTransfers_);
+}
+
 void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
     std::size_t prepared = mesh_.elements.size();
     while (!candidates.empty() && !cancelled()) {
@@ -262,6 +459,19 @@ void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
             if (d.split == Element::kNone) {
                 for (int k = 0; k < d.linkCount; ++k)
                     links_[c.receiver].push_back(d.links[static_cast<std::size_t>(k)]);
+                if (d.clusterLink) clusterLinks_.push_back(*d.clusterLink);
+                continue;
+            }
+            if (ClusterHierarchy::isCluster(d.split)) {
+                const std::array<std::uint32_t, 2>& children = clusters_.cluster(d.split).children;
+                for (std::uint32_t child : children) {
+                    if (c.receiver == c.source)
+                        for (std::uint32_t other : children)
+                            next.push_back({child, other});
+                    else
+                        next.push_back(d.split == c.receiver ? Candidate{child, c.source}
+                                                             : Candidate{c.receiver, child});
+                }
                 continue;
             }
             const std::uint32_t first = split(d.split);
@@ -288,6 +498,14 @@ void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
         }
         prepareElements(before);
         again = mesh_.elements.size() > before;
+    }
+    clusterReceives_.assign(clusters_.clusters().size(), {});
+    elementReceives_.assign(mesh_.elements.size(), {});
+    for (std::uint32_t i = 0; i < clusterLinks_.size(); ++i) {
+        const std::uint32_t r = clusterLinks_[i].receiver;
+        (ClusterHierarchy::isCluster(r) ? clusterReceives_[ClusterHierarchy::indexOf(r)]
+                                        : elementReceives_[r])
+            .push_back(i);
     }
 }
 
@@ -321,6 +539,12 @@ std::vector<HierarchicalRadiosity::Candidate> HierarchicalRadiosity::relink() {
     // A pair whose link on one side stayed would be linked twice on that side: drop those links.
     for (const Candidate& c : candidates)
         std::erase_if(links_[c.receiver], [&](const Link& l) { return l.source == c.source; });
+    if (!full_)
+        std::erase_if(clusterLinks_, [&](const ClusterLink& link) {
+            if (clusterLinkError(link) <= epsilon_) return false;
+            candidates.push_back({link.receiver, link.source});
+            return true;
+        });
     return candidates;
 }
 
@@ -328,11 +552,23 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
     std::vector<std::uint32_t> leaves = mesh_.leaves();
     leafTerms_.assign(resolved ? mesh_.elements.size() : 0, {});
     coverage_.assign(mesh_.elements.size(), {0, 0});
+    // The cluster links' form factors: what they would bring from sources of radiosity 1.
+    std::vector<Color> unit(clusterLinks_.size());
+    parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
+        const ClusterLink& link = clusterLinks_[i];
+        unit[i] =
+            link.visibility * clusters_.irradianceAt(mesh_, link.source,
+                                                     clusters_.extent(mesh_, link.receiver).center,
+                                                     [](std::uint32_t, Side) { return Color(1); });
+    });
+    const std::vector<std::array<Color, 2>> clusterCoverage = gatherThroughClusters(unit);
     parallelFor(leaves.size(), 8, [&](std::size_t i) {
         const std::uint32_t leaf = leaves[i];
         const Element& element = mesh_.elements[leaf];
         const std::array<Vec3, 3> points = quadraturePoints(mesh_.corners(element));
-        for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e])
+        for (std::size_t side = 0; side < 2; ++side)
+            coverage_[leaf][side] += clusterCoverage[leaf][side].average();
+        for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e]) {
             for (const Link& link : links_[e]) {
                 if (!resolved) {
                     coverage_[leaf][sideIndex(link.receiverSide)] += link.formFactor().average();
@@ -357,11 +593,13 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
                 leafTerms_[leaf].push_back({link.source, link.receiverSide, link.sourceSide, FV});
                 coverage_[leaf][sideIndex(link.receiverSide)] += FV.average();
             }
+        }
     });
 }
 
 double HierarchicalRadiosity::iteration(bool resolved) {
     // Jacobi: every element gathers from the radiosities of the last iteration.
+    updateFromClusters();
     if (!resolved)
         parallelFor(links_.size(), 64, [&](std::size_t r) {
             std::array<Color, 2> E;
@@ -385,6 +623,8 @@ double HierarchicalRadiosity::iteration(bool resolved) {
                 for (std::size_t side = 0; side < 2; ++side)
                     E[side] += gathered_[e][side];
         }
+        for (std::size_t side = 0; side < 2; ++side)
+            E[side] += fromClusters_[leaf][side];
         Element& element = mesh_.elements[leaf];
         for (std::size_t side = 0; side < 2; ++side) {
             // A receiver sees at most its hemisphere: where its form factors add up to more
@@ -478,6 +718,12 @@ void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
             for (const Link& link : links_[e])
                 E[sideIndex(link.receiverSide)] += gatherFrom(
                     at, link, link.source, hashValues(v, sideIndex(link.receiverSide)), rays);
+        if (!clusters_.empty()) {
+            const std::array<Color, 2> fromClusters =
+                clusterLinksAt(at, smoothing.siteLeaf(v), clusterTransfers_);
+            for (std::size_t side = 0; side < 2; ++side)
+                E[side] += fromClusters[side];
+        }
         smoothing.vertexIrradiance[v] = E;
     });
 }
@@ -486,6 +732,7 @@ RadiosityStatistics HierarchicalRadiosity::statistics(std::size_t leaves) const 
     RadiosityStatistics s;
     s.patches = mesh_.patches.size();
     s.elements = leaves;
+    s.links = linkCount();
     s.shots = iterations_;
     s.initialPower = initialPower_;
     s.residualPower = residual_;
@@ -520,11 +767,7 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
     epsilon_ = static_cast<double>(settings_.refinementTolerance) * initialPower_ / area;
     if (!carryOn()) return std::nullopt;
 
-    std::vector<Candidate> candidates;
-    candidates.reserve(roots_.size() * roots_.size());
-    for (std::uint32_t r : roots_)
-        for (std::uint32_t s : roots_)
-            if (r != s) candidates.push_back({r, s});
+    std::vector<Candidate> candidates = firstCandidates();
     for (int pass = 0; pass < kMaxRefinementPasses && initialPower_ > 0; ++pass) {
         phase = RadiosityProgress::Phase::Refining;
         refine(std::move(candidates));
@@ -549,12 +792,23 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
 
     phase = RadiosityProgress::Phase::Gathering;
     if (!carryOn()) return std::nullopt;
+    updateFromClusters();
     VertexSmoothing smoothing(mesh_, mesh_.leaves(), 1e-5 * patchSize_);
     gatherAtVertices(smoothing);
     if (cancelled()) return std::nullopt;
     RadiosityStatistics s = statistics(mesh_.leaves().size());
     s.seconds = reporter.seconds();
     return std::move(smoothing).solution(mesh_.lookupDistance(patchSize_), fingerprint_, s);
+}
+
+std::vector<HierarchicalRadiosity::Candidate> HierarchicalRadiosity::firstCandidates() const {
+    if (!clusters_.empty()) return {{clusters_.top(), clusters_.top()}};
+    std::vector<Candidate> candidates;
+    candidates.reserve(roots_.size() * roots_.size());
+    for (std::uint32_t r : roots_)
+        for (std::uint32_t s : roots_)
+            if (r != s) candidates.push_back({r, s});
+    return candidates;
 }
 
 RadiositySolution HierarchicalRadiosity::snapshot() const {

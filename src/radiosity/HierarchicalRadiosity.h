@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "radiosity/ClusterHierarchy.h"
 #include "radiosity/FormFactor.h"
 #include "radiosity/RadiosityMesh.h"
 #include "radiosity/RadiosityMethod.h"
@@ -42,6 +43,16 @@ class VertexSmoothing;
 //  7. the irradiance at every vertex of the leaves is gathered there through the same links,
 //     from the children of the sources it sees large, visibility traced again for the partly
 //     occluded links.
+// With clusters ("clusters": true; Smits, Arvo and Greenberg 1994; Sillion 1995), step 2 starts
+// instead from the top cluster's link to itself (see ClusterHierarchy): a cluster's link to
+// itself becomes its children's links to each other and to themselves, and a link with a cluster
+// at an end carries the irradiance its source delivers at the receiver's centre (each member
+// with its own cosine), which every leaf under the receiver takes at its own centroid with its
+// own cosine. Its error is the reflected radiosity times (twice the ends' radii over their
+// distance, or 64 where they are less than 3 times their radii apart, plus 1 when partly
+// occluded); the larger end is split (a cluster into its two children) until that is below the
+// threshold, so the link count grows near linearly with the elements. Bright sources (lamps) are
+// never clustered.
 // Where a leaf's form factors add up to more than 1 (within the refinement's error), what they
 // bring is scaled back: no element gains power, and the iterations converge.
 // The result does not depend on the number of threads: every form factor and visibility is
@@ -76,9 +87,35 @@ public:
                    std::min({visibility.r, visibility.g, visibility.b}) < 1;
         }
     };
-    // The links gathered by each element (index as in mesh().elements).
+    // The links gathered by each element (index as in mesh().elements), between elements.
     const std::vector<std::vector<Link>>& links() const { return links_; }
+    // A link with a cluster at one end or both: the receiver gathers the irradiance the source
+    // delivers at its centre, times the fraction of visibility rays between points of the two
+    // that got through; each of its elements takes that from the source's centre, by the inverse
+    // square of its own distance and its own cosine.
+    struct ClusterLink {
+        std::uint32_t receiver = 0, source = 0;  // nodes (ClusterHierarchy)
+        Vec3 sourceCenter;
+        float distance2 = 0;  // from the receiver's centre to the source's, squared
+        float spread = 0;     // the relative error of the point-to-point transfer
+        Color visibility;
+        bool partlyVisible() const {
+            return visibility.maxComponent() > 0 &&
+                   std::min({visibility.r, visibility.g, visibility.b}) < 1;
+        }
+    };
+    const std::vector<ClusterLink>& clusterLinks() const { return clusterLinks_; }
+    const ClusterHierarchy& clusters() const { return clusters_; }
+    // Both kinds.
     std::size_t linkCount() const;
+    // The power (W per channel) a cluster link brings to its receiver's elements (a cluster's
+    // members) from the present radiosities.
+    Color clusterLinkPower(const ClusterLink& link) const;
+    // What an element of a link's receiver takes on each side of the irradiance `atCenter` the
+    // link brings at normal incidence to the receiver's centre.
+    static std::array<Color, 2> received(const Element& element, const ClusterLink& link,
+                                         const Color& atCenter);
+
     // Radiosity (W/m^2) leaving each side of each element, as the last iteration left it.
     const std::vector<std::array<Color, 2>>& radiosity() const { return radiosity_; }
     // How wrong the radiosity a link brings to its receiver may be (W/m^2), by the oracle of
@@ -93,10 +130,11 @@ private:
     struct Candidate {
         std::uint32_t receiver, source;
     };
-    // What to do with a candidate link: the links it makes, or which end to split.
+    // What to do with a candidate link: the links it makes, or which end to split (a node).
     struct Decision {
         std::array<Link, 2> links;
         int linkCount = 0;
+        std::optional<ClusterLink> clusterLink;
         std::uint32_t split = Element::kNone;
     };
 
@@ -115,6 +153,33 @@ private:
     // they receive from the scene's lights.
     void prepareElements(std::size_t first);
     Decision decide(const Candidate& candidate, std::uint64_t& rayCount) const;
+    // decide() where an end is a cluster.
+    Decision decideWithCluster(const Candidate& candidate, std::uint64_t& rayCount) const;
+    // The larger end of a pair with a cluster (a cluster, or an element that may be split).
+    std::uint32_t clusterSplitChoice(std::uint32_t receiver, std::uint32_t source) const;
+    // The oracle's error for a cluster link: the radiosity it brings to the receiver may be off by
+    // this much (W/m^2).
+    double clusterLinkError(const ClusterLink& link) const;
+    // The power (W, averaged over the channels) a node's elements send from both sides.
+    double sourcePower(std::uint32_t node) const;
+    // The irradiance at normal incidence the link brings, from the present radiosities.
+    Color clusterTransfer(const ClusterLink& link) const;
+    // The fraction of `rays` rays between points of the two ends that get through.
+    Color clusterVisibility(std::uint32_t receiver, std::uint32_t source, int rays,
+                            std::uint64_t seed, std::uint64_t& rayCount) const;
+    // What the cluster links received by a leaf, its ancestors and the clusters above its root
+    // bring to `at` (the leaf, or a gather site on it) when each brings `perLink` (at normal
+    // incidence, at its receiver's centre): see received().
+    std::array<Color, 2> clusterLinksAt(const Element& at, std::uint32_t leaf,
+                                        const std::vector<Color>& perLink) const;
+    // The same at every leaf (indexed by element).
+    std::vector<std::array<Color, 2>> gatherThroughClusters(
+        const std::vector<Color>& perLink) const;
+    // clusterTransfers_ and fromClusters_ from the present radiosities.
+    void updateFromClusters();
+    // The refinement's first candidates: the top cluster's link to itself, or every pair of
+    // patches.
+    std::vector<Candidate> firstCandidates() const;
     // Refines the candidates, and the candidates their splits make, into links; then splits the
     // leaves whose light varies too much.
     void refine(std::vector<Candidate> candidates);
@@ -151,7 +216,14 @@ private:
     std::vector<float> lightSpread_;                // its spread over the element (W/m^2)
     std::vector<std::array<Color, 2>> radiosity_;
     std::vector<std::vector<Link>> links_;
-    std::vector<std::array<Color, 2>> gathered_;  // through the element's own links
+    ClusterHierarchy clusters_;
+    std::vector<ClusterLink> clusterLinks_;
+    // Per cluster and per element, the cluster links it receives (indices into clusterLinks_).
+    std::vector<std::vector<std::uint32_t>> clusterReceives_;
+    std::vector<std::vector<std::uint32_t>> elementReceives_;
+    std::vector<Color> clusterTransfers_;             // what each brings to its receiver's centre
+    std::vector<std::array<Color, 2>> fromClusters_;  // per leaf: what they all bring it
+    std::vector<std::array<Color, 2>> gathered_;      // through the element's own links
     // What each leaf gathers: every link of the leaf and of its ancestors, with the form factor
     // from the leaf itself (its centroid, or three points of it for a source seen large), and
     // those form factors added up per side.

@@ -15,7 +15,8 @@ namespace {
 
 constexpr char kMagic[16] = {'l', 'a', 'n', 'c', 'e', 'r', ' ', 'r',
                              'a', 'd', 'i', 'o', 's', 'i', 't', 'y'};
-constexpr std::uint32_t kVersion = 1;
+// 2: the statistics count the links.
+constexpr std::uint32_t kVersion = 2;
 
 template <typename T>
 void write(std::ostream& out, const T& value) {

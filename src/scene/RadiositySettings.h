@@ -19,6 +19,9 @@ struct RadiositySettings {
     // Hierarchical: a link whose reflected radiosity may be wrong by more than this fraction of
     // the mean radiosity put in is refined.
     float refinementTolerance = 0.02f;
+    // Hierarchical: the patches grouped into clusters, the solve starting from the top cluster's
+    // link to itself instead of linking every pair of patches.
+    bool clusters = false;
     // The render, not the solution: rays gathering the solution at each eye ray's diffuse hit
     // (0: the solution interpolated there).
     int finalGather = 0;

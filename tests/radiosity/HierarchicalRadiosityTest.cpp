@@ -1,7 +1,8 @@
 // Hierarchical radiosity: furnaces (closed box and sphere, whose exact answer is known, checked
 // on the solution shown), energy balance, the leaves' form factors adding up to 1 in a closed
 // room, the refinement oracle's bound honoured, a light's shadow refined, independence from the
-// thread count, progress reports and cancellation.
+// thread count, progress reports and cancellation; the furnaces, the balance and the thread
+// count with clusters too (HierarchicalClusteringTest.cpp checks the clusters themselves).
 
 #include <gtest/gtest.h>
 #include <tbb/global_control.h>
@@ -21,17 +22,18 @@ constexpr float kAlbedo = 0.6f;
 constexpr float kEmission = 0.25f;
 
 const std::string kHierarchical = R"("method": "hierarchical", "threshold": 1e-4)";
+const std::string kClustered = kHierarchical + R"(, "clusters": true)";
 
-Scene furnaceBox() {
-    return loadScene(closedBox("glow"),
-                     R"(, "radiosity": {"patch_size": 0.5, )" + kHierarchical + "}");
+Scene furnaceBox(bool clusters = false) {
+    return loadScene(closedBox("glow"), R"(, "radiosity": {"patch_size": 0.5, )" +
+                                            (clusters ? kClustered : kHierarchical) + "}");
 }
 
-TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
+void expectClosedBoxFurnace(bool clusters) {
     // Every point sees the rest of the closed box, whose radiosity is B = pi Le + rho E
     // everywhere: E = pi Le / (1 - rho) on the inner side, which the solution shows (gathered at
     // its vertices through the links) all over every wall, corners included.
-    Scene scene = furnaceBox();
+    Scene scene = furnaceBox(clusters);
     HierarchicalRadiosity solver(scene);
     const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
     ASSERT_TRUE(solution);
@@ -62,10 +64,18 @@ TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
     EXPECT_LT(worst, 0.01f);
 }
 
-TEST(HierarchicalRadiosityTest, FormFactorsOfEveryLeafAddUpToOneInAClosedBox) {
+TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
+    expectClosedBoxFurnace(false);
+}
+
+TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceWithClusters) {
+    expectClosedBoxFurnace(true);
+}
+
+void expectFormFactorsAddUpToOne(bool clusters) {
     // Each leaf gathers through its own links and its ancestors', with form factors from the leaf
     // itself: in a closed room they cover its whole hemisphere once.
-    Scene scene = furnaceBox();
+    Scene scene = furnaceBox(clusters);
     HierarchicalRadiosity solver(scene);
     ASSERT_TRUE(solver.solve({}, nullptr));
     const RadiosityMesh& mesh = solver.mesh();
@@ -77,6 +87,14 @@ TEST(HierarchicalRadiosityTest, FormFactorsOfEveryLeafAddUpToOneInAClosedBox) {
         EXPECT_EQ(solver.coverage(leaf, Side::Back), 0) << "leaf " << leaf;
     }
     EXPECT_GT(leaves, 200u);  // refined beyond the 72 roots
+}
+
+TEST(HierarchicalRadiosityTest, FormFactorsOfEveryLeafAddUpToOneInAClosedBox) {
+    expectFormFactorsAddUpToOne(false);
+}
+
+TEST(HierarchicalRadiosityTest, FormFactorsOfEveryLeafAddUpToOneInAClosedBoxWithClusters) {
+    expectFormFactorsAddUpToOne(true);
 }
 
 TEST(HierarchicalRadiosityTest, EveryLinkLeftIsWithinTheOraclesBound) {
@@ -114,8 +132,8 @@ TEST(HierarchicalRadiosityTest, EveryLinkLeftIsWithinTheOraclesBound) {
     EXPECT_GT(mesh.elements.size(), 4u + 16u);
 }
 
-TEST(HierarchicalRadiosityTest, EnergyBalanceInAClosedBox) {
-    Scene scene = furnaceBox();
+void expectEnergyBalance(bool clusters) {
+    Scene scene = furnaceBox(clusters);
     HierarchicalRadiosity solver(scene);
     const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
     ASSERT_TRUE(solution);
@@ -126,10 +144,19 @@ TEST(HierarchicalRadiosityTest, EnergyBalanceInAClosedBox) {
     EXPECT_NEAR(absorbed, emitted, 5e-3 * emitted);
 }
 
-TEST(HierarchicalRadiosityTest, ClosedSphereFurnace) {
-    Scene scene = loadScene(R"({"type": "sphere", "center": [0.5, 0.5, 0.5], "radius": 1,
+TEST(HierarchicalRadiosityTest, EnergyBalanceInAClosedBox) {
+    expectEnergyBalance(false);
+}
+
+TEST(HierarchicalRadiosityTest, EnergyBalanceInAClosedBoxWithClusters) {
+    expectEnergyBalance(true);
+}
+
+void expectClosedSphereFurnace(bool clusters) {
+    Scene scene = loadScene(
+        R"({"type": "sphere", "center": [0.5, 0.5, 0.5], "radius": 1,
                                 "material": "glow"})",
-                            R"(, "radiosity": {"patch_size": 1, )" + kHierarchical + "}");
+        R"(, "radiosity": {"patch_size": 1, )" + (clusters ? kClustered : kHierarchical) + "}");
     HierarchicalRadiosity solver(scene);
     const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
     ASSERT_TRUE(solution);
@@ -143,6 +170,14 @@ TEST(HierarchicalRadiosityTest, ClosedSphereFurnace) {
         ASSERT_TRUE(E) << k;
         EXPECT_NEAR(E->b, expected, 0.01f * expected) << k;
     }
+}
+
+TEST(HierarchicalRadiosityTest, ClosedSphereFurnace) {
+    expectClosedSphereFurnace(false);
+}
+
+TEST(HierarchicalRadiosityTest, ClosedSphereFurnaceWithClusters) {
+    expectClosedSphereFurnace(true);
 }
 
 // A floor lit by a point light above it, with a small black square in between: a shadow.
@@ -192,10 +227,21 @@ TEST(HierarchicalRadiosityTest, TheLightsShadowIsDarkAndTheRestLit) {
     EXPECT_LT(dark->r, 1e-3f * E->r);
 }
 
-std::vector<float> solveWithThreads(int threads) {
+// The box with each wall in 4 x 4 squares, lit by a point light over a black square, clustered.
+Scene clusteredRoom() {
+    return loadScene(
+        closedBox("white", 4) + ", " +
+            square(Vec3(0.3f, 0.6f, 0.7f), Vec3(0.4f, 0, 0), Vec3(0, 0, -0.4f), "black"),
+        R"(, "lights": [{"type": "point", "position": [0.5, 0.9, 0.5],
+                                      "intensity": 1}],
+                         "radiosity": {"patch_size": 1, )" +
+            kClustered + "}");
+}
+
+std::vector<float> solveWithThreads(int threads, bool clusters) {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
                               static_cast<std::size_t>(threads));
-    Scene scene = shadowedFloor(3);
+    Scene scene = clusters ? clusteredRoom() : shadowedFloor(3);
     HierarchicalRadiosity solver(scene);
     const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
     std::vector<float> values;
@@ -210,11 +256,15 @@ std::vector<float> solveWithThreads(int threads) {
 }
 
 TEST(HierarchicalRadiosityTest, SameSolutionWhateverTheThreadCount) {
-    EXPECT_TRUE(solveWithThreads(1) == solveWithThreads(2));
+    EXPECT_TRUE(solveWithThreads(1, false) == solveWithThreads(2, false));
 }
 
-TEST(HierarchicalRadiosityTest, ProgressReportsAndCancellation) {
-    Scene scene = furnaceBox();
+TEST(HierarchicalRadiosityTest, SameSolutionWhateverTheThreadCountWithClusters) {
+    EXPECT_TRUE(solveWithThreads(1, true) == solveWithThreads(2, true));
+}
+
+void expectProgressReportsAndCancellation(bool clusters) {
+    Scene scene = furnaceBox(clusters);
     HierarchicalRadiosity solver(scene);
     std::atomic<bool> cancel{false};
     int reports = 0;
@@ -232,6 +282,22 @@ TEST(HierarchicalRadiosityTest, ProgressReportsAndCancellation) {
     EXPECT_FALSE(solution);
     EXPECT_TRUE(sawIterating);
     EXPECT_GE(reports, 2);
+}
+
+TEST(HierarchicalRadiosityTest, ProgressReportsAndCancellation) {
+    expectProgressReportsAndCancellation(false);
+}
+
+TEST(HierarchicalRadiosityTest, ProgressReportsAndCancellationWithClusters) {
+    expectProgressReportsAndCancellation(true);
+}
+
+TEST(HierarchicalRadiosityTest, ClustersChangeTheFingerprint) {
+    // A solution saved without clusters is not loaded for the scene with them, nor the reverse.
+    Scene without = furnaceBox(false);
+    Scene with = furnaceBox(true);
+    EXPECT_NE(HierarchicalRadiosity(without).fingerprint(),
+              HierarchicalRadiosity(with).fingerprint());
 }
 
 TEST(HierarchicalRadiosityTest, AnotherFingerprintThanProgressive) {

@@ -45,14 +45,7 @@ TEST(RadiosityRender, ClosedSphereFurnace) {
 
 TEST(RadiosityRender, ClosedBoxFurnace) {
     // The box [0, 1]^3 of inward-facing squares (triangles emit on their front side only).
-    std::string box;
-    for (const auto& [corner, u, v] : {std::tuple{Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0)},
-                                       {Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1)},
-                                       {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)},
-                                       {Vec3(0, 0, 1), Vec3(0, 1, 0), Vec3(1, 0, 0)},
-                                       {Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
-                                       {Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0)}})
-        box += (box.empty() ? "" : ", ") + square(corner, u, v, "glow");
+    const std::string box = closedBox("glow");
     expectFurnace(renderScene(sceneWith(box, R"({"diffuse": 0.5, "emission": 0.2})")).image,
                   0.2 / (1 - 0.5));
 }
@@ -252,6 +245,18 @@ TEST(RadiosityRender, HierarchicalCornellBoxAgainstMitsuba) {
     ASSERT_EQ(image.width, reference.width);
     const double error = relativeRmseOffTheLamp(image, reference);
     std::cout << "hierarchical radiosity vs Mitsuba: relative RMSE off the lamp " << error << '\n';
+    EXPECT_LT(error, 0.05);
+}
+
+TEST(RadiosityRender, ClusteredHierarchicalCornellBoxAgainstMitsuba) {
+    // Hierarchical radiosity with clusters (the solve starts from the top cluster's link to
+    // itself), its other settings the defaults: no worse than without them.
+    const Image reference = loadImage(fs::path(LANCER_CORNELL_DIR) / "mitsuba-path-16384spp.exr");
+    const Image image = renderCornell({{"method", "hierarchical"}, {"clusters", true}}, 16);
+    ASSERT_EQ(image.width, reference.width);
+    const double error = relativeRmseOffTheLamp(image, reference);
+    std::cout << "clustered hierarchical radiosity vs Mitsuba: relative RMSE off the lamp " << error
+              << '\n';
     EXPECT_LT(error, 0.05);
 }
 
@@ -463,6 +468,7 @@ INSTANTIATE_TEST_SUITE_P(
         KeyErrorCase{"FractionalShots", R"({"max_shots": 2.5})", 28, "whole number"},
         KeyErrorCase{"NoRefinementTolerance", R"({"refinement_tolerance": 0})", 39,
                      "greater than 0"},
+        KeyErrorCase{"ClustersNotAFlag", R"({"clusters": 1})", 27, "must be true or false"},
         KeyErrorCase{"UnknownMethod", R"({"method": "hierarchal"})", 25, "radiosity method"},
         KeyErrorCase{"NegativeFinalGather", R"({"final_gather": -1})", 31, "at least 0"},
         KeyErrorCase{"TooLargeAFinalGather", R"({"final_gather": 5000})", 31, "at most 4096"}),

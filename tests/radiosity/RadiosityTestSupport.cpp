@@ -1,5 +1,6 @@
 #include "RadiosityTestSupport.h"
 
+#include <array>
 #include <sstream>
 
 #include "io/SceneLoader.h"
@@ -33,13 +34,33 @@ std::string square(const Vec3& corner, const Vec3& u, const Vec3& v, const std::
            triangle(corner, corner + u + v, corner + v);
 }
 
-std::string closedBox(const std::string& material) {
-    return square(Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0), material) + ", " +  // floor
-           square(Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1), material) + ", " +  // ceiling
-           square(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), material) + ", " +  // back
-           square(Vec3(0, 0, 1), Vec3(0, 1, 0), Vec3(1, 0, 0), material) + ", " +  // front
-           square(Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), material) + ", " +  // left
-           square(Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0), material);          // right
+std::string tiledSquare(const Vec3& corner, const Vec3& u, const Vec3& v, int tiles,
+                        const std::string& material) {
+    const float step = 1.0f / static_cast<float>(tiles);
+    std::string text;
+    for (int i = 0; i < tiles; ++i)
+        for (int j = 0; j < tiles; ++j)
+            text +=
+                (text.empty() ? "" : ", ") + square(corner + (step * static_cast<float>(i)) * u +
+                                                        (step * static_cast<float>(j)) * v,
+                                                    step * u, step * v, material);
+    return text;
+}
+
+std::string closedBox(const std::string& material, int tiles) {
+    // floor, ceiling, back, front, left, right: corner, u, v
+    const std::array<std::array<Vec3, 3>, 6> walls{{
+        {Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0)},
+        {Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1)},
+        {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)},
+        {Vec3(0, 0, 1), Vec3(0, 1, 0), Vec3(1, 0, 0)},
+        {Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
+        {Vec3(1, 0, 0), Vec3(0, 0, 1), Vec3(0, 1, 0)},
+    }};
+    std::string box;
+    for (const auto& [corner, u, v] : walls)
+        box += (box.empty() ? "" : ", ") + tiledSquare(corner, u, v, tiles, material);
+    return box;
 }
 
 std::vector<std::uint32_t> patchesFacing(const RadiosityMesh& mesh, const Vec3& normal) {

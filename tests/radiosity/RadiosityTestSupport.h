@@ -19,8 +19,13 @@ Scene loadScene(const std::string& objects, const std::string& extra = "");
 std::string square(const Vec3& corner, const Vec3& u, const Vec3& v,
                    const std::string& material = "white");
 
-// A closed box [0, 1]^3 of inward-facing squares (their front, the emitting side, inside).
-std::string closedBox(const std::string& material);
+// The same square cut into tiles x tiles squares.
+std::string tiledSquare(const Vec3& corner, const Vec3& u, const Vec3& v, int tiles,
+                        const std::string& material = "white");
+
+// A closed box [0, 1]^3 of inward-facing squares (their front, the emitting side, inside), each
+// wall cut into tiles x tiles squares.
+std::string closedBox(const std::string& material, int tiles = 1);
 
 // The patches whose normal is `normal` (the tests' surfaces face different ways).
 std::vector<std::uint32_t> patchesFacing(const RadiosityMesh& mesh, const Vec3& normal);

@@ -1,0 +1,125 @@
+#include "radiosity/ClusterHierarchy.h"
+
+#include <algorithm>
+
+#include "math/Bounds3.h"
+
+namespace lancer {
+
+namespace {
+
+// A point of the triangle from one of the unit square, uniform over the triangle when the
+// square's point is.
+Vec3 uniformPointOn(const std::array<Vec3, 3>& t, const Vec2& uv) {
+    const float su = std::sqrt(uv.x);
+    return (1 - su) * t[0] + su * (1 - uv.y) * t[1] + su * uv.y * t[2];
+}
+
+// How many members after the one drawn a cluster's sample looks through for one facing the
+// other end.
+constexpr std::uint32_t kFacingSearch = 8;
+
+}  // namespace
+
+ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::uint32_t> roots)
+    : members_(std::move(roots)) {
+    if (members_.size() < 2) {
+        members_.clear();
+        return;
+    }
+    clusters_.reserve(members_.size() - 1);
+    build(mesh, 0, static_cast<std::uint32_t>(members_.size()), Element::kNone);
+    areaBefore_.resize(members_.size() + 1, 0);
+    for (std::size_t i = 0; i < members_.size(); ++i)
+        areaBefore_[i + 1] = areaBefore_[i] + mesh.elements[members_[i]].area;
+}
+
+std::uint32_t ClusterHierarchy::build(const RadiosityMesh& mesh, std::uint32_t first,
+                                      std::uint32_t count, std::uint32_t parent) {
+    if (count == 1) {
+        const std::uint32_t element = members_[first];
+        if (rootParent_.size() <= element) rootParent_.resize(element + 1, Element::kNone);
+        rootParent_[element] = parent;
+        return element;
+    }
+    const auto index = static_cast<std::uint32_t>(clusters_.size());
+    clusters_.emplace_back();
+    Bounds3 box, centroids;
+    float area = 0, reflectance = 0;
+    for (std::uint32_t i = first; i < first + count; ++i) {
+        const Element& e = mesh.elements[members_[i]];
+        for (const Vec3& corner : mesh.corners(e))
+            box = merge(box, corner);
+        centroids = merge(centroids, e.centroid);
+        area += e.area;
+        reflectance = std::max(reflectance, e.reflectance.average());
+    }
+    // The median along the centroids' longest axis (ties broken by element: the same tree on
+    // every run).
+    const int axis = centroids.maxExtentAxis();
+    const std::uint32_t half = count / 2;
+    const auto begin = members_.begin() + first;
+    std::nth_element(begin, begin + half, begin + count, [&](std::uint32_t a, std::uint32_t b) {
+        const float ca = mesh.elements[a].centroid[axis], cb = mesh.elements[b].centroid[axis];
+        return ca < cb || (ca == cb && a < b);
+    });
+    const std::uint32_t left = build(mesh, first, half, index);
+    const std::uint32_t right = build(mesh, first + half, count - half, index);
+    Cluster& c = clusters_[index];
+    c.center = box.centroid();
+    c.radius = 0.5f * length(box.diagonal());
+    c.area = area;
+    c.reflectance = reflectance;
+    c.children = {left, right};
+    c.parent = parent;
+    c.firstMember = first;
+    c.memberCount = count;
+    return nodeOf(index);
+}
+
+ClusterHierarchy::Extent ClusterHierarchy::extent(const RadiosityMesh& mesh,
+                                                  std::uint32_t node) const {
+    if (isCluster(node)) return {cluster(node).center, cluster(node).radius};
+    const Element& e = mesh.elements[node];
+    float radius = 0;
+    for (const Vec3& corner : mesh.corners(e))
+        radius = std::max(radius, length(corner - e.centroid));
+    return {e.centroid, radius};
+}
+
+ClusterHierarchy::SurfacePoint ClusterHierarchy::sample(const RadiosityMesh& mesh,
+                                                        std::uint32_t node, const Vec3& towards,
+                                                        Vec2 u) const {
+    std::uint32_t element = node;
+    if (isCluster(node)) {
+        // The member under u.x along the members' areas laid end to end, u.x then rescaled
+        // within it.
+        const Cluster& c = cluster(node);
+        const double start = areaBefore_[c.firstMember];
+        const double target = start + u.x * (areaBefore_[c.firstMember + c.memberCount] - start);
+        const auto from = areaBefore_.begin() + c.firstMember + 1;
+        const auto found = std::upper_bound(from, from + c.memberCount - 1, target);
+        auto i = static_cast<std::uint32_t>(found - areaBefore_.begin()) - 1;
+        const double width = areaBefore_[i + 1] - areaBefore_[i];
+        u.x = width > 0 ? std::clamp(static_cast<float>((target - areaBefore_[i]) / width), 0.0f,
+                                     0.99999994f)
+                        : 0.5f;
+        for (std::uint32_t k = 0; k < std::min(kFacingSearch, c.memberCount); ++k) {
+            const std::uint32_t j = c.firstMember + (i - c.firstMember + k) % c.memberCount;
+            const Element& m = mesh.elements[members_[j]];
+            if (dot(m.normal, towards - m.centroid) > 0) {
+                i = j;
+                break;
+            }
+        }
+        element = members_[i];
+    }
+    const Element& e = mesh.elements[element];
+    SurfacePoint s;
+    s.p = uniformPointOn(mesh.corners(e), u);
+    s.n = dot(e.normal, towards - s.p) >= 0 ? e.normal : -e.normal;
+    s.patch = &mesh.patches[e.patch];
+    return s;
+}
+
+}  // namespace lancer
