@@ -21,7 +21,7 @@ namespace lancer {
 RadiosityIntegrator::RadiosityIntegrator(const Scene& scene, int maxDepth,
                                          std::shared_ptr<const RadiositySolution> solution,
                                          int finalGather)
-    : WhittedIntegrator(scene, maxDepth),
+    : WhittedIntegrator(scene, maxDepth, Bsdf::Weights::EnergyConserving),
       solution_(std::move(solution)),
       finalGather_(finalGather),
       emitters_(scene) {}
@@ -150,7 +150,7 @@ Color RadiosityIntegrator::gatherRadiance(const Ray& ray, int glossyBounces, Sam
     Color L;
     if (!emitters_.lightAt(hit) && (front || hit.shape->emitsOnBothSides()))
         L += hit.material->emission(hit);
-    const Bsdf bsdf(*hit.material, hit, wo, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(*hit.material, hit, wo, Bsdf::Weights::EnergyConserving);
     const Color kd = bsdf.diffuseReflectance();
     const Vec3 n = bsdf.shadingNormal(front);
     if (!kd.isBlack()) L += kd * solutionIrradiance(hit, n, wo, sampler, rayCount) / kPi;

@@ -15,8 +15,8 @@
 
 namespace lancer {
 
-WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth)
-    : scene_(scene), maxDepth_(maxDepth) {}
+WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, Bsdf::Weights weights)
+    : scene_(scene), maxDepth_(maxDepth), weights_(weights) {}
 
 std::unique_ptr<Integrator> WhittedIntegrator::create(const Scene& scene, const IntegratorSetup&) {
     return std::make_unique<WhittedIntegrator>(scene, scene.settings().maxDepth);
@@ -59,7 +59,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     const Vec3 wo = -normalize(ray.direction);
     // Shade the side the ray arrived on.
     const bool front = hit.frontFace(ray);
-    const Bsdf bsdf(material, hit, wo, Bsdf::Weights::AsGiven);
+    const Bsdf bsdf(material, hit, wo, weights_);
 
     Color L;
     if (front || hit.shape->emitsOnBothSides()) L += material.emission(hit);

@@ -2,11 +2,11 @@
 
 #include <memory>
 
+#include "materials/Bsdf.h"
 #include "render/Integrator.h"
 
 namespace lancer {
 
-class Bsdf;
 class Scene;
 struct IntegratorSetup;
 struct Hit;
@@ -15,10 +15,12 @@ struct Hit;
 // ambient, the lobes' local responses to the lights with shadow rays, and the delta lobes'
 // recursive reflection and refraction (weights split by the Fresnel term for transmissive
 // materials) up to maxDepth bounces, and the rough lobes' traced rays. Subclasses may replace the
-// local shading (ambient and direct lighting) and keep the rest (radiosity does).
+// local shading (ambient and direct lighting) and keep the rest (radiosity does), and weigh the
+// lobes as the path tracer does instead of as given (radiosity's physical model is path's).
 class WhittedIntegrator : public Integrator {
 public:
-    WhittedIntegrator(const Scene& scene, int maxDepth);
+    WhittedIntegrator(const Scene& scene, int maxDepth,
+                      Bsdf::Weights weights = Bsdf::Weights::AsGiven);
     static std::unique_ptr<Integrator> create(const Scene& scene, const IntegratorSetup& setup);
 
     Color radiance(const Ray& ray, const RayCone& footprint, Sampler& sampler,
@@ -48,6 +50,7 @@ private:
 
     const Scene& scene_;
     int maxDepth_;
+    Bsdf::Weights weights_;
 };
 
 }  // namespace lancer

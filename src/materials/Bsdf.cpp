@@ -17,7 +17,7 @@ Bsdf::Bsdf(const Material& material, const Hit& hit, const Vec3& wo, Weights wei
 }
 
 void Bsdf::weighLobes(Weights weights) {
-    if (weights == Weights::AsGiven) return;  // Whitted and radiosity: nothing is sampled
+    if (weights == Weights::AsGiven) return;  // Whitted: nothing is sampled
     Color sum;
     for (std::size_t i = 0; i < lobeCount_; ++i)
         sum += lobes_[i]->weight();

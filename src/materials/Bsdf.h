@@ -19,15 +19,15 @@ class Material;
 struct Hit;
 
 // How a material scatters light at one hit point: the lobes its material adds (at most
-// kMaxLobes), held inline, since the path tracer builds one at every bounce. For the path tracer,
-// energy is conserved: when the lobes' weights sum to more than 1 in some channel, all weights
-// are divided by the largest channel sum, so that no light is created. One lobe is sampled,
-// chosen in proportion to its (scaled) weight averaged over the channels.
+// kMaxLobes), held inline, since the path tracer builds one at every bounce. For the path tracer
+// and radiosity, energy is conserved: when the lobes' weights sum to more than 1 in some channel,
+// all weights are divided by the largest channel sum, so that no light is created. One lobe is
+// sampled, chosen in proportion to its (scaled) weight averaged over the channels.
 //
-// Whitted and radiosity shade with the scene format's equation instead, from the same lobes with
-// their weights as given: the lobes' local responses lit by the lights, the delta lobes' light
-// traced along specular rays, and (radiosity) the diffuse lobes' albedo, the glossy lobes' f and
-// sampled directions, and the rough lobes' traced rays.
+// Whitted and radiosity shade their own way from the same lobes (Whitted with the weights as
+// given, the scene format's equation): the lobes' local responses lit by the lights, the delta
+// lobes' light traced along specular rays, and (radiosity) the diffuse lobes' albedo, the glossy
+// lobes' f and sampled directions, and the rough lobes' traced rays.
 //
 // Directions are in world space, unit length and point away from the surface. The lobes live in
 // the frame of the shading normal (turned to the front side); light that would cross the
@@ -41,7 +41,7 @@ public:
 
     enum class Weights {
         EnergyConserving,  // the path tracer's
-        AsGiven,           // the scene format's equation (Whitted, radiosity): not for sample()
+        AsGiven,           // the scene format's equation (Whitted): not for sample()
     };
 
     // The frame's normal is the material's shading normal at the hit, seen from wo (the

@@ -1,6 +1,7 @@
 #include "radiosity/SurfaceProbe.h"
 
 #include "geometry/Shape.h"
+#include "materials/Bsdf.h"
 #include "materials/Material.h"
 
 namespace lancer {
@@ -51,8 +52,12 @@ Color SurfaceProbe::average(const Patch& patch, const std::array<Vec3, 3>& corne
 }
 
 Color SurfaceProbe::reflectance(const Patch& patch, const std::array<Vec3, 3>& corners) {
-    return average(patch, corners,
-                   [](const Hit& hit) { return hit.material->diffuseReflectance(hit); });
+    // kd as the radiosity integrator shades with it: scaled with the other lobes, as the path
+    // tracer scales them, where they sum to more than 1.
+    return average(patch, corners, [&](const Hit& hit) {
+        return Bsdf(*hit.material, hit, patch.normal, Bsdf::Weights::EnergyConserving)
+            .diffuseReflectance();
+    });
 }
 
 Color SurfaceProbe::emission(const Patch& patch, const std::array<Vec3, 3>& corners) {
