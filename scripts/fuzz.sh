@@ -18,8 +18,6 @@ cmake --preset fuzz > /dev/null
 cmake --build --preset fuzz --target "${targets[@]/#/fuzz_}"
 
 mkdir -p build/fuzz/findings
-# Leaks inside third-party libraries are theirs, not findings of ours (the file says which).
-export LSAN_OPTIONS="suppressions=$PWD/tests/fuzz/lsan-suppressions.txt${LSAN_OPTIONS:+:$LSAN_OPTIONS}"
 failed=()
 for target in "${targets[@]}"; do
     corpus="build/fuzz/corpus/$target"

@@ -4,11 +4,11 @@
 
 namespace lancer {
 
-// The third-party libraries io adapts (FreeImage, nlohmann-json, tinyobjloader, Assimp), for
+// The third-party libraries io adapts (FreeImage, nlohmann-json, tinyobjloader), for
 // lancer --version: io is their only home.
 class IoLibraries {
 public:
-    // "FreeImage 3.18.0, nlohmann-json 3.11.2, tinyobjloader 2rc10, Assimp 5.2.4".
+    // "FreeImage 3.18.0, nlohmann-json 3.11.2, tinyobjloader 2rc10".
     static std::string versions();
 };
 

@@ -1,24 +1,23 @@
-// PLY models are parsed by Assimp's PLY importer, given the file from memory so that no other
-// importer sees it. Assimp trusts the header: it allocates for the element counts it declares
-// before reading a byte of the body (a 300-byte file declaring 10^9 vertices took 11 GB and over a
-// minute) and reads a truncated ASCII body on as if it were whole. So the header is read here
-// first and the body walked against it, element by element, before Assimp is called: what Assimp
-// then allocates is bounded by the file's size.
+// PLY models are read here, header and body. They were read by Assimp's PLY importer, which trusts
+// the header (a 300-byte file declaring 10^9 vertices took 11 GB) and, in the version Debian
+// ships (5.2.5), writes outside its buffers on some malformed files (fuzz_ply found the heap
+// corrupted; upstream fixed several such overflows in its PLY importer since). The format is small:
+// a header of elements and their typed properties, then the elements' values, as text or as
+// binary of either byte order. So every count here is bounded by the file's size before anything
+// is allocated for it, and every read by the bytes left.
 
 #include "io/PlyLoader.h"
 
-#include <assimp/postprocess.h>
-#include <assimp/scene.h>
-#include <assimp/Importer.hpp>
-
 #include <algorithm>
+#include <bit>
 #include <cctype>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <exception>
+#include <cstring>
 #include <fstream>
-#include <limits>
+#include <span>
 #include <sstream>
 #include <string_view>
 #include <utility>
@@ -36,13 +35,17 @@ namespace fs = std::filesystem;
 namespace {
 
 // ---------------------------------------------------------------------------------------------
-// The header, and the body checked against it
+// The header
 
 enum class PlyFormat { Ascii, BinaryLittleEndian, BinaryBigEndian };
 
+enum class ScalarType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+
 struct PlyProperty {
-    std::size_t countBytes = 0;  // a list's count type; 0: not a list
-    std::size_t valueBytes = 0;  // the value's type, or a list item's
+    std::string name;
+    ScalarType type = ScalarType::Float32;  // the value's, or a list item's
+    bool isList = false;
+    ScalarType countType = ScalarType::UInt8;  // a list's count
 };
 
 struct PlyElement {
@@ -55,17 +58,44 @@ struct PlyHeader {
     PlyFormat format = PlyFormat::Ascii;
     std::vector<PlyElement> elements;
     std::size_t bodyStart = 0;  // the offset of the byte after end_header's line
+    int bodyLine = 0;           // and its line number
 };
 
 // Every scalar type of the PLY specification, under both its old and its sized names.
-std::size_t typeBytes(const std::string& type) {
-    static const std::pair<const char*, std::size_t> kTypes[] = {
-        {"char", 1},  {"uchar", 1},   {"int8", 1},   {"uint8", 1},  {"short", 2}, {"ushort", 2},
-        {"int16", 2}, {"uint16", 2},  {"int", 4},    {"uint", 4},   {"int32", 4}, {"uint32", 4},
-        {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8}};
-    for (const auto& [name, bytes] : kTypes)
-        if (type == name) return bytes;
-    return 0;
+bool parseType(const std::string& name, ScalarType& type) {
+    static const std::pair<const char*, ScalarType> kTypes[] = {
+        {"char", ScalarType::Int8},      {"int8", ScalarType::Int8},
+        {"uchar", ScalarType::UInt8},    {"uint8", ScalarType::UInt8},
+        {"short", ScalarType::Int16},    {"int16", ScalarType::Int16},
+        {"ushort", ScalarType::UInt16},  {"uint16", ScalarType::UInt16},
+        {"int", ScalarType::Int32},      {"int32", ScalarType::Int32},
+        {"uint", ScalarType::UInt32},    {"uint32", ScalarType::UInt32},
+        {"float", ScalarType::Float32},  {"float32", ScalarType::Float32},
+        {"double", ScalarType::Float64}, {"float64", ScalarType::Float64}};
+    for (const auto& [typeName, value] : kTypes)
+        if (name == typeName) {
+            type = value;
+            return true;
+        }
+    return false;
+}
+
+std::size_t bytesOf(ScalarType type) {
+    switch (type) {
+        case ScalarType::Int8:
+        case ScalarType::UInt8:
+            return 1;
+        case ScalarType::Int16:
+        case ScalarType::UInt16:
+            return 2;
+        case ScalarType::Int32:
+        case ScalarType::UInt32:
+        case ScalarType::Float32:
+            return 4;
+        case ScalarType::Float64:
+            return 8;
+    }
+    return 8;
 }
 
 class HeaderReader {
@@ -111,6 +141,7 @@ public:
             if (element.count > 0 && element.properties.empty())
                 fail("element " + inQuotes(element.name) + " has no properties");
         header.bodyStart = at_;
+        header.bodyLine = lineNumber_ + 1;
         return header;
     }
 
@@ -138,13 +169,14 @@ private:
         words >> type;
         PlyProperty property;
         if (type == "list") {
+            property.isList = true;
             std::string countType;
             words >> countType >> type;
-            property.countBytes = typeBytes(countType);
-            if (property.countBytes == 0) fail("unknown list count type " + inQuotes(countType));
+            if (!parseType(countType, property.countType))
+                fail("unknown list count type " + inQuotes(countType));
         }
-        property.valueBytes = typeBytes(type);
-        if (property.valueBytes == 0) fail("unknown property type " + inQuotes(type));
+        if (!parseType(type, property.type)) fail("unknown property type " + inQuotes(type));
+        words >> property.name;
         return property;
     }
 
@@ -158,103 +190,322 @@ private:
     int lineNumber_ = 0;  // of the line last read
 };
 
-// Walks the body element by element, so that a body shorter than its header says is an error
-// here rather than garbage (or a huge allocation) in Assimp.
-class BodyChecker {
-public:
-    BodyChecker(const fs::path& path, const std::string& data, const PlyHeader& header)
-        : path_(path), data_(data), header_(header), at_(header.bodyStart) {}
+// ---------------------------------------------------------------------------------------------
+// The body
 
-    void check() {
+// What a vertex property is to lancer.
+enum class VertexRole { Ignored, X, Y, Z, NormalX, NormalY, NormalZ, U, V, Colour };
+
+VertexRole roleOf(const PlyProperty& property) {
+    static const std::pair<const char*, VertexRole> kRoles[] = {
+        {"x", VertexRole::X},          {"y", VertexRole::Y},         {"z", VertexRole::Z},
+        {"nx", VertexRole::NormalX},   {"ny", VertexRole::NormalY},  {"nz", VertexRole::NormalZ},
+        {"u", VertexRole::U},          {"s", VertexRole::U},         {"texture_u", VertexRole::U},
+        {"texture_s", VertexRole::U},  {"v", VertexRole::V},         {"t", VertexRole::V},
+        {"texture_v", VertexRole::V},  {"texture_t", VertexRole::V}, {"red", VertexRole::Colour},
+        {"green", VertexRole::Colour}, {"blue", VertexRole::Colour}};
+    if (property.isList) return VertexRole::Ignored;
+    for (const auto& [name, role] : kRoles)
+        if (property.name == name) return role;
+    return VertexRole::Ignored;
+}
+
+// The faces' corners, face after face.
+struct PlyFaces {
+    std::vector<std::uint32_t> corners;
+    std::vector<std::size_t> ends;  // of each face's corners in `corners`
+};
+
+// Reads the body element by element into the mesh's vertices and the faces; other elements are
+// read past. A count is refused (as a truncated body) before anything is allocated for it when
+// the bytes left cannot hold it.
+class BodyReader {
+public:
+    BodyReader(const fs::path& path, const std::string& data, const PlyHeader& header,
+               TriangleMesh& mesh)
+        : path_(path),
+          data_(data),
+          header_(header),
+          mesh_(mesh),
+          at_(header.bodyStart),
+          line_(header.bodyLine),
+          lineStart_(header.bodyStart) {}
+
+    PlyFaces read() {
+        bool verticesRead = false, facesRead = false;
         for (const PlyElement& element : header_.elements) {
-            // A count beyond what the bytes left can hold is refused before the walk, which is
-            // then bounded by them (the last ASCII value needs no separator after it).
+            element_ = &element;
             const std::uint64_t least = minimumBytes(element);
             if (least == 0) continue;  // no properties: nothing to read, however many
-            if (element.count > (data_.size() - at_ + 1) / least) truncated(element);
-            for (std::uint64_t i = 0; i < element.count; ++i)
-                for (const PlyProperty& property : element.properties)
-                    if (!skip(property)) truncated(element);
+            // The last ASCII value needs no separator after it.
+            if (element.count > (data_.size() - at_ + 1) / least) truncated();
+            if (element.name == "vertex" && !verticesRead) {
+                readVertices(element);
+                verticesRead = true;
+            } else if (element.name == "face" && !facesRead) {
+                readFaces(element);
+                facesRead = true;
+            } else {
+                for (std::uint64_t i = 0; i < element.count; ++i)
+                    for (const PlyProperty& property : element.properties)
+                        skip(property);
+            }
         }
+        return std::move(faces_);
     }
+
+    bool hasNormals() const { return hasNormals_; }
+    bool hasUvs() const { return hasUvs_; }
+    bool hasColours() const { return hasColours_; }
 
 private:
-    // Of one element (never 0: it has properties): a value takes a digit and a separator in
-    // ASCII; in binary its type's bytes, a list its count's.
-    std::uint64_t minimumBytes(const PlyElement& element) const {
-        const bool ascii = header_.format == PlyFormat::Ascii;
-        std::uint64_t bytes = 0;
-        for (const PlyProperty& property : element.properties)
-            bytes += ascii                     ? 2
-                     : property.countBytes > 0 ? property.countBytes
-                                               : property.valueBytes;
-        return bytes;
-    }
+    void readVertices(const PlyElement& element) {
+        std::vector<VertexRole> roles;
+        bool present[10] = {};
+        for (const PlyProperty& property : element.properties) {
+            roles.push_back(roleOf(property));
+            present[int(roles.back())] = true;
+        }
+        const auto has = [&](VertexRole role) { return present[int(role)]; };
+        if (!has(VertexRole::X) || !has(VertexRole::Y) || !has(VertexRole::Z))
+            headerFault("the \"vertex\" element has no x, y and z properties");
+        hasNormals_ =
+            has(VertexRole::NormalX) && has(VertexRole::NormalY) && has(VertexRole::NormalZ);
+        hasUvs_ = has(VertexRole::U) && has(VertexRole::V);
+        hasColours_ = has(VertexRole::Colour);
 
-    bool skip(const PlyProperty& property) {
-        if (header_.format == PlyFormat::Ascii) {
-            std::string_view token;
-            if (!nextToken(token)) return false;
-            if (property.countBytes == 0) return true;
-            std::uint64_t count = 0;
-            for (const char c : token) {
-                if (!std::isdigit(static_cast<unsigned char>(c)) || count > data_.size())
-                    throw InputError(path_.string(), "not a valid PLY file: a list's count " +
-                                                         inQuotes(std::string(token)) +
-                                                         " is not a count");
-                count = count * 10 + std::uint64_t(c - '0');
+        const auto count = std::size_t(element.count);
+        mesh_.positions.reserve(count);
+        if (hasNormals_) mesh_.normals.reserve(count);
+        if (hasUvs_) mesh_.uvs.reserve(count);
+        float values[10] = {};
+        for (std::size_t i = 0; i < count; ++i) {
+            for (std::size_t p = 0; p < roles.size(); ++p) {
+                const PlyProperty& property = element.properties[p];
+                if (roles[p] == VertexRole::Ignored || roles[p] == VertexRole::Colour)
+                    skip(property);
+                else
+                    values[int(roles[p])] = readValue<float>(property);
             }
-            for (std::uint64_t i = 0; i < count; ++i)
-                if (!nextToken(token)) return false;
-            return true;
+            const auto value = [&](VertexRole role) { return values[int(role)]; };
+            mesh_.positions.emplace_back(value(VertexRole::X), value(VertexRole::Y),
+                                         value(VertexRole::Z));
+            if (hasNormals_) {
+                const Vec3 given(value(VertexRole::NormalX), value(VertexRole::NormalY),
+                                 value(VertexRole::NormalZ));
+                // A zero or broken normal stays zero: "none", shaded flat.
+                const bool usable = isFinite(given) && length(given) > 0;
+                mesh_.normals.push_back(usable ? normalize(given) : Vec3());
+            }
+            if (hasUvs_) {
+                const Vec2 uv(value(VertexRole::U), value(VertexRole::V));
+                mesh_.uvs.push_back(std::isfinite(uv.x) && std::isfinite(uv.y) ? uv : Vec2());
+            }
         }
-        if (property.countBytes == 0) return advance(property.valueBytes);
-        if (data_.size() - at_ < property.countBytes) return false;
-        const std::uint64_t count = readUnsigned(property.countBytes);
-        at_ += property.countBytes;
-        return count <= (data_.size() - at_) / property.valueBytes &&
-               advance(count * property.valueBytes);
     }
 
-    bool advance(std::uint64_t bytes) {
-        if (data_.size() - at_ < bytes) return false;
-        at_ += std::size_t(bytes);
-        return true;
+    void readFaces(const PlyElement& element) {
+        const auto corners = std::find_if(
+            element.properties.begin(), element.properties.end(), [](const PlyProperty& property) {
+                return property.name == "vertex_indices" || property.name == "vertex_index";
+            });
+        if (corners == element.properties.end() || !corners->isList)
+            headerFault("the \"face\" element has no vertex_indices list");
+        faces_.ends.reserve(std::size_t(element.count));
+        for (std::uint64_t i = 0; i < element.count; ++i) {
+            for (const PlyProperty& property : element.properties) {
+                if (&property != &*corners) {
+                    skip(property);
+                    continue;
+                }
+                const std::uint64_t count = readCount(property);
+                for (std::uint64_t k = 0; k < count; ++k) {
+                    const double index = readValue<double>(property);
+                    // Whether it names a vertex is known once every element is read.
+                    if (!(index >= 0 && index <= double(UINT32_MAX) && index == std::floor(index)))
+                        throw InputError(path_.string(), location(),
+                                         "a face's vertex index is out of range: face " +
+                                             std::to_string(i) + " names vertex " +
+                                             numberText(index));
+                    faces_.corners.push_back(std::uint32_t(index));
+                }
+                faces_.ends.push_back(faces_.corners.size());
+            }
+        }
     }
 
-    // A list's count; its sign is not looked at, as a negative count is refused as too large.
-    std::uint64_t readUnsigned(std::size_t bytes) const {
-        std::uint64_t value = 0;
-        for (std::size_t i = 0; i < bytes; ++i) {
-            const std::size_t byte =
-                header_.format == PlyFormat::BinaryBigEndian ? i : bytes - 1 - i;
-            value = value << 8 | static_cast<unsigned char>(data_[at_ + byte]);
+    void skip(const PlyProperty& property) {
+        const std::uint64_t count = property.isList ? readCount(property) : 1;
+        for (std::uint64_t k = 0; k < count; ++k) {
+            if (ascii())
+                nextToken();
+            else
+                advance(bytesOf(property.type));
         }
+    }
+
+    // A list's length, refused as a truncated body when the bytes left cannot hold its items.
+    std::uint64_t readCount(const PlyProperty& property) {
+        std::uint64_t count = 0;
+        if (ascii()) {
+            const std::string_view token = nextToken();
+            const auto [end, error] =
+                std::from_chars(token.data(), token.data() + token.size(), count);
+            if (error != std::errc() || end != token.data() + token.size())
+                fail("a list's count " + quoted(token) + " is not a count");
+        } else {
+            const double value = decode(property.countType);
+            if (!(value >= 0)) fail("a list's count " + numberText(value) + " is not a count");
+            count = std::uint64_t(value);
+        }
+        const std::size_t itemBytes = ascii() ? 2 : bytesOf(property.type);
+        if (count > (data_.size() - at_ + 1) / itemBytes) truncated();
+        return count;
+    }
+
+    // A scalar as T (float or double): text is parsed straight to T, rounded once.
+    template <class T>
+    T readValue(const PlyProperty& property) {
+        if (!ascii()) return T(decode(property.type));
+        std::string_view token = nextToken();
+        if (token.size() > 1 && token.front() == '+') token.remove_prefix(1);
+        T value = 0;
+        const char* const last = token.data() + token.size();
+        std::from_chars_result result = std::from_chars(token.data(), last, value);
+        if (result.ec == std::errc::result_out_of_range) {
+            // Beyond float's range (a tiny normal's component written by a double's printf):
+            // the double's value, rounded to T, is 0 or infinite as it should be.
+            double wide = 0;
+            result = std::from_chars(token.data(), last, wide);
+            value = T(wide);
+        }
+        if (result.ec != std::errc() || result.ptr != last)
+            fail(quoted(token) + " is not a number (the " + inQuotes(property.name) +
+                 " property of a " + inQuotes(element_->name) + " element)");
         return value;
     }
 
-    bool nextToken(std::string_view& token) {
-        const auto isSpace = [](char c) { return std::isspace(static_cast<unsigned char>(c)); };
-        while (at_ < data_.size() && isSpace(data_[at_]))
-            ++at_;
-        const std::size_t start = at_;
-        while (at_ < data_.size() && !isSpace(data_[at_]))
-            ++at_;
-        token = std::string_view(data_).substr(start, at_ - start);
-        return !token.empty();
+    // A binary value of the given type, in the file's byte order.
+    double decode(ScalarType type) {
+        const std::size_t bytes = bytesOf(type);
+        unsigned char raw[8] = {};
+        advance(bytes);
+        std::memcpy(raw, data_.data() + at_ - bytes, bytes);
+        const bool bigEndian = header_.format == PlyFormat::BinaryBigEndian;
+        if (bigEndian != (std::endian::native == std::endian::big)) std::reverse(raw, raw + bytes);
+        const auto as = [&raw](auto value) {
+            std::memcpy(&value, raw, sizeof value);
+            return double(value);
+        };
+        switch (type) {
+            case ScalarType::Int8:
+                return as(std::int8_t{});
+            case ScalarType::UInt8:
+                return as(std::uint8_t{});
+            case ScalarType::Int16:
+                return as(std::int16_t{});
+            case ScalarType::UInt16:
+                return as(std::uint16_t{});
+            case ScalarType::Int32:
+                return as(std::int32_t{});
+            case ScalarType::UInt32:
+                return as(std::uint32_t{});
+            case ScalarType::Float32:
+                return as(float{});
+            case ScalarType::Float64:
+                return as(double{});
+        }
+        return 0;
     }
 
-    [[noreturn]] void truncated(const PlyElement& element) const {
+    void advance(std::size_t bytes) {
+        if (data_.size() - at_ < bytes) truncated();
+        at_ += bytes;
+    }
+
+    // The next whitespace-separated word of an ASCII body; none left is a truncated body.
+    std::string_view nextToken() {
+        const auto isSpace = [](char c) { return std::isspace(static_cast<unsigned char>(c)); };
+        while (at_ < data_.size() && isSpace(data_[at_])) {
+            if (data_[at_] == '\n') {
+                ++line_;
+                lineStart_ = at_ + 1;
+            }
+            ++at_;
+        }
+        tokenStart_ = at_;
+        while (at_ < data_.size() && !isSpace(data_[at_]))
+            ++at_;
+        if (at_ == tokenStart_) truncated();
+        return std::string_view(data_).substr(tokenStart_, at_ - tokenStart_);
+    }
+
+    // Of one element (never 0: it has properties): a value takes a digit and a separator in
+    // ASCII; in binary its type's bytes, a list its count's.
+    std::uint64_t minimumBytes(const PlyElement& element) const {
+        std::uint64_t bytes = 0;
+        for (const PlyProperty& property : element.properties)
+            bytes += ascii()           ? 2
+                     : property.isList ? bytesOf(property.countType)
+                                       : bytesOf(property.type);
+        return bytes;
+    }
+
+    bool ascii() const { return header_.format == PlyFormat::Ascii; }
+
+    static std::string numberText(double value) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", value);
+        return text;
+    }
+
+    // An ASCII body's faults name the line and column of the word at fault.
+    SourceLocation location() const {
+        return ascii() ? SourceLocation{line_, int(tokenStart_ - lineStart_) + 1}
+                       : SourceLocation{};
+    }
+
+    [[noreturn]] void fail(const std::string& message) const {
+        throw InputError(path_.string(), location(), "not a valid PLY file: " + message);
+    }
+
+    [[noreturn]] void headerFault(const std::string& message) const {
+        throw InputError(path_.string(), "not a valid PLY file: " + message);
+    }
+
+    // A word of the body in a message: quoted, cut short, its control characters as codes.
+    static std::string quoted(std::string_view token) {
+        std::string text;
+        for (const char c : token.substr(0, 32)) {
+            if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7F) {
+                char code[8];
+                std::snprintf(code, sizeof code, "\\x%02X", static_cast<unsigned char>(c));
+                text += code;
+            } else {
+                text += c;
+            }
+        }
+        return inQuotes(token.size() > 32 ? text + "..." : text);
+    }
+
+    [[noreturn]] void truncated() const {
         throw InputError(path_.string(),
                          "is truncated: its header declares " +
-                             countOf(element.count, inQuotes(element.name) + " element") +
+                             countOf(element_->count, inQuotes(element_->name) + " element") +
                              ", more than its body holds");
     }
 
     const fs::path& path_;
     const std::string& data_;
     const PlyHeader& header_;
+    TriangleMesh& mesh_;
+    PlyFaces faces_;
+    const PlyElement* element_ = nullptr;  // being read
+    bool hasNormals_ = false, hasUvs_ = false, hasColours_ = false;
     std::size_t at_;
+    int line_;               // of the ASCII body's byte at_
+    std::size_t lineStart_;  // and that line's first byte
+    std::size_t tokenStart_ = 0;
 };
 
 // ---------------------------------------------------------------------------------------------
@@ -286,103 +537,79 @@ std::string readWhole(const fs::path& path) {
     return data;
 }
 
-// Assimp's validation messages, said in PLY's terms where the fault is the file's.
-InputError importError(const fs::path& path, const std::string& message) {
-    if (message.find("contains no faces") != std::string::npos)
-        return InputError(path.string(), "no faces to render");
-    if (message.find("is out of range") != std::string::npos)
-        return InputError(path.string(),
-                          "a face's vertex index is out of range (Assimp: " + message + ")");
-    return InputError(path.string(), "not a valid PLY file: " + message);
-}
-
-class MeshConverter {
+// The faces, triangulated as the OBJ loader triangulates its faces (concave ones right), less
+// zero-area triangles, into a mesh that holds the file's vertices.
+class FaceTriangulator {
 public:
-    explicit MeshConverter(std::shared_ptr<TriangleMesh> mesh) : mesh_(std::move(mesh)) {}
+    FaceTriangulator(const fs::path& path, TriangleMesh& mesh) : path_(path), mesh_(mesh) {}
 
-    void add(const aiMesh& source) {
-        const auto first = std::uint32_t(mesh_->positions.size());
-        const bool hasUvs = source.HasTextureCoords(0);
-        hasNormals_ |= source.HasNormals();
-        hasUvs_ |= hasUvs;
-        hasColours_ |= source.HasVertexColors(0);
-        for (unsigned i = 0; i < source.mNumVertices; ++i) {
-            const aiVector3D& p = source.mVertices[i];
-            mesh_->positions.emplace_back(p.x, p.y, p.z);
-            Vec3 normal;
-            if (source.HasNormals()) {
-                const aiVector3D& n = source.mNormals[i];
-                const Vec3 given(n.x, n.y, n.z);
-                // A zero or broken normal stays zero: "none", shaded flat.
-                if (isFinite(given) && length(given) > 0) normal = normalize(given);
-            }
-            mesh_->normals.push_back(normal);
-            Vec2 uv;
-            if (hasUvs) {
-                const aiVector3D& t = source.mTextureCoords[0][i];
-                if (std::isfinite(t.x) && std::isfinite(t.y)) uv = {t.x, t.y};
-            }
-            mesh_->uvs.push_back(uv);
-        }
-        for (unsigned f = 0; f < source.mNumFaces; ++f) {
-            const aiFace& face = source.mFaces[f];
-            if (face.mNumIndices < 3) {
+    void add(const PlyFaces& faces) {
+        const std::size_t vertexCount = mesh_.positions.size();
+        mesh_.indices.reserve(3 * faces.ends.size());
+        std::size_t begin = 0;
+        for (std::size_t f = 0; f < faces.ends.size(); ++f) {
+            const std::span<const std::uint32_t> face(faces.corners.data() + begin,
+                                                      faces.ends[f] - begin);
+            begin = faces.ends[f];
+            for (const std::uint32_t index : face)
+                if (index >= vertexCount)
+                    throw InputError(path_.string(),
+                                     "a face's vertex index is out of range: face " +
+                                         std::to_string(f) + " names vertex " +
+                                         std::to_string(index) + " of " +
+                                         std::to_string(vertexCount) +
+                                         (vertexCount == 1 ? " vertex" : " vertices"));
+            if (face.size() < 3) {
                 ++pointsAndLines_;
                 continue;
             }
-            facePositions_.clear();
-            for (unsigned k = 0; k < face.mNumIndices; ++k)
-                facePositions_.push_back(mesh_->positions[first + face.mIndices[k]]);
-            if (!std::all_of(facePositions_.begin(), facePositions_.end(),
+            corners_.clear();
+            for (const std::uint32_t index : face)
+                corners_.push_back(mesh_.positions[index]);
+            if (!std::all_of(corners_.begin(), corners_.end(),
                              [](const Vec3& p) { return isFinite(p); })) {
                 ++nonFinite_;
                 continue;
             }
-            addTriangles(face, first);
+            addTriangles(face);
         }
     }
 
-    // A face split as the OBJ loader splits its faces (concave ones right), less zero-area
-    // triangles; facePositions_ holds its corners.
-    void addTriangles(const aiFace& face, std::uint32_t first) {
-        PolygonTriangulator::triangulate(facePositions_, faceTriangles_);
-        for (const PolygonTriangulator::CornerTriple& t : faceTriangles_) {
-            const Vec3& p0 = facePositions_[t[0]];
-            if (!(length(cross(facePositions_[t[1]] - p0, facePositions_[t[2]] - p0)) > 0)) {
+    void finish(std::vector<std::string>& warnings, bool hasColours) {
+        if (hasColours)
+            warn(warnings, path_, "vertex colours are not used; the object's material applies");
+        if (pointsAndLines_ > 0)
+            warn(warnings, path_,
+                 countOf(pointsAndLines_, "face") +
+                     " with fewer than 3 vertices (points, lines) ignored");
+        if (nonFinite_ > 0)
+            warn(warnings, path_,
+                 countOf(nonFinite_, "face") + " with non-finite vertex coordinates dropped");
+        if (zeroArea_ > 0)
+            warn(warnings, path_, countOf(zeroArea_, "zero-area triangle") + " dropped");
+        if (mesh_.triangleCount() == 0) throw InputError(path_.string(), "no faces to render");
+    }
+
+private:
+    void addTriangles(std::span<const std::uint32_t> face) {
+        PolygonTriangulator::triangulate(corners_, triangles_);
+        for (const PolygonTriangulator::CornerTriple& t : triangles_) {
+            const Vec3& p0 = corners_[t[0]];
+            if (!(length(cross(corners_[t[1]] - p0, corners_[t[2]] - p0)) > 0)) {
                 ++zeroArea_;
                 continue;
             }
             for (const std::size_t corner : t)
-                mesh_->indices.push_back(first + face.mIndices[corner]);
-            mesh_->faceMaterials.push_back(0);
+                mesh_.indices.push_back(face[corner]);
+            mesh_.faceMaterials.push_back(0);
         }
     }
 
-    std::shared_ptr<TriangleMesh> finish(const fs::path& path, std::vector<std::string>& warnings) {
-        if (hasColours_)
-            warn(warnings, path, "vertex colours are not used; the object's material applies");
-        if (pointsAndLines_ > 0)
-            warn(warnings, path,
-                 countOf(pointsAndLines_, "face") +
-                     " with fewer than 3 vertices (points, lines) ignored");
-        if (nonFinite_ > 0)
-            warn(warnings, path,
-                 countOf(nonFinite_, "face") + " with non-finite vertex coordinates dropped");
-        if (zeroArea_ > 0)
-            warn(warnings, path, countOf(zeroArea_, "zero-area triangle") + " dropped");
-        if (mesh_->triangleCount() == 0) throw InputError(path.string(), "no faces to render");
-        if (!hasNormals_) mesh_->normals.clear();
-        if (!hasUvs_) mesh_->uvs.clear();
-        mesh_->materials.push_back(std::make_shared<BlinnPhongMaterial>());
-        return mesh_;
-    }
-
-private:
-    std::shared_ptr<TriangleMesh> mesh_;
-    bool hasNormals_ = false, hasUvs_ = false, hasColours_ = false;
+    const fs::path& path_;
+    TriangleMesh& mesh_;
     std::size_t pointsAndLines_ = 0, nonFinite_ = 0, zeroArea_ = 0;
-    std::vector<Vec3> facePositions_;                               // of the face being added
-    std::vector<PolygonTriangulator::CornerTriple> faceTriangles_;  // and its triangles
+    std::vector<Vec3> corners_;                                 // of the face being added
+    std::vector<PolygonTriangulator::CornerTriple> triangles_;  // and its triangles
 };
 
 }  // namespace
@@ -405,25 +632,14 @@ std::shared_ptr<TriangleMesh> PlyLoader::load(const fs::path& path,
                                               std::vector<std::string>& warnings) {
     const std::string data = readWhole(path);
     const PlyHeader header = HeaderReader(path, data).read();
-    BodyChecker(path, data, header).check();
-
-    // Assimp logs nothing unless a logger is created, which lancer never does. Its validation
-    // catches the indices out of range. Faces are triangulated here, as OBJ's are: Assimp's
-    // triangulation aborts the process (an assertion) on faces of no vertices, and gets concave
-    // faces wrong. No other step is asked for: the file's vertices are the mesh's.
-    Assimp::Importer importer;
-    const aiScene* scene = nullptr;
-    try {
-        scene = importer.ReadFileFromMemory(data.data(), data.size(),
-                                            aiProcess_ValidateDataStructure, "ply");
-    } catch (const std::exception& e) {  // Assimp catches its own, but not in every build
-        throw importError(path, e.what());
-    }
-    if (!scene) throw importError(path, importer.GetErrorString());
-    MeshConverter converter(std::make_shared<TriangleMesh>());
-    for (unsigned m = 0; m < scene->mNumMeshes; ++m)
-        converter.add(*scene->mMeshes[m]);
-    return converter.finish(path, warnings);
+    auto mesh = std::make_shared<TriangleMesh>();
+    BodyReader body(path, data, header, *mesh);
+    const PlyFaces faces = body.read();
+    FaceTriangulator triangulator(path, *mesh);
+    triangulator.add(faces);
+    triangulator.finish(warnings, body.hasColours());
+    mesh->materials.push_back(std::make_shared<BlinnPhongMaterial>());
+    return mesh;
 }
 
 }  // namespace lancer

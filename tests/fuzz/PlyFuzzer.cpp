@@ -1,4 +1,4 @@
-// libFuzzer target: the PLY loader (its header and body checks, then Assimp's PLY importer). Each
+// libFuzzer target: the PLY loader (its header and body readers). Each
 // input is written as model.ply, ASCII or binary as its header says. A model's fault must be an
 // InputError or a warning; anything else is a finding.
 

@@ -121,7 +121,7 @@ TEST(PlyLoader, VertexColoursAndLinesAreWarnedOf) {
 }
 
 // A concave face is split by the OBJ loader's ear clipping: its triangles cover it exactly.
-// A face of no vertices (Assimp's triangulation once aborted on them) is ignored.
+// A face of no vertices is ignored.
 TEST(PlyLoader, ConcaveFacesAreTriangulatedAndEmptyFacesIgnored) {
     ScratchFolder folder;
     const std::vector<Vec3> lShape = {{0, 0, 0}, {2, 0, 0}, {2, 1, 0},
@@ -194,9 +194,14 @@ TEST(PlyErrors, EachBadFileIsOneInputErrorNamingIt) {
         {"billion-vertices-declared.ply",
          "is truncated: its header declares 1000000000 \"vertex\" elements, more than its "
          "body holds"},
-        {"list-count-not-a-number.ply",
-         "not a valid PLY file: a list's count \"x\" is not a count"},
-        {"index-out-of-range.ply", "a face's vertex index is out of range"},
+        {"index-out-of-range.ply",
+         "a face's vertex index is out of range: face 0 names vertex 7 of 3 vertices"},
+        {"vertex-without-z.ply",
+         "not a valid PLY file: the \"vertex\" element has no x, y and z properties"},
+        {"face-without-vertex-indices.ply",
+         "not a valid PLY file: the \"face\" element has no vertex_indices list"},
+        {"negative-list-count-binary.ply",
+         "not a valid PLY file: a list's count -1 is not a count"},
         {"no-faces.ply", "no faces to render"},
         // Found by fuzz_ply: Assimp's parser never returned from it.
         {"carriage-return-before-end-header.ply",
@@ -206,6 +211,30 @@ TEST(PlyErrors, EachBadFileIsOneInputErrorNamingIt) {
         const fs::path path = corpus(name);
         EXPECT_EQ(plyError(path).rfind(path.string() + ": error: " + says, 0), 0u)
             << name << ": " << plyError(path);
+    }
+}
+
+// A fault in an ASCII body is named by its line and column, the word at fault quoted (control
+// characters as codes). The last file is one fuzz_ply was running when the heap was found
+// corrupted inside Assimp 5.2.5's PLY importer, which lancer no longer uses.
+TEST(PlyErrors, AsciiBodyFaultsNameTheLineAndColumn) {
+    const std::pair<const char*, const char*> kCases[] = {
+        {"list-count-not-a-number.ply",
+         ":13:1: error: not a valid PLY file: a list's count \"x\" is not a count"},
+        {"value-not-a-number.ply",
+         ":11:3: error: not a valid PLY file: \"zero\" is not a number (the \"y\" property of a "
+         "\"vertex\" element)"},
+        {"negative-index.ply",
+         ":13:5: error: a face's vertex index is out of range: face 0 names vertex -1"},
+        {"fractional-index.ply",
+         ":13:5: error: a face's vertex index is out of range: face 0 names vertex 1.5"},
+        {"control-character-in-the-body.ply",
+         ":19:3: error: not a valid PLY file: \"\\x10\" is not a number (the \"y\" property of "
+         "a \"vertex\" element)"},
+    };
+    for (const auto& [name, says] : kCases) {
+        const fs::path path = corpus(name);
+        EXPECT_EQ(plyError(path), path.string() + says) << name;
     }
 }
 
