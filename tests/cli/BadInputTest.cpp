@@ -234,8 +234,8 @@ const BadInput kBadInputs[] = {
      "is truncated",
      2,
      {{"m.ply", "corpus:ply/truncated-ascii.ply"}}},
-    // 10^9 vertices declared in a 300-byte file: refused from the header, before Assimp
-    // allocates for them (it took 11 GB).
+    // 10^9 vertices declared in a 300-byte file: refused from the header, before anything is
+    // allocated for them (Assimp, which once read PLY, took 11 GB).
     {"PlyCountBeyondTheFile",
      meshScene("m.ply"),
      kRender,
