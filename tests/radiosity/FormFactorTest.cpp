@@ -54,6 +54,31 @@ TEST(FormFactorTest, OnlyThePartInFrontOfThePointCounts) {
                 1, 1e-3);
 }
 
+// A point on the plane of a triangle facing the same way sees it edge-on: F = 0, also where
+// rounding puts the point a hair in front of it inside its outline (where the contour integral
+// gives 1, the triangle filling the hemisphere). A point 1 mm in front, facing it, still sees
+// almost all of its hemisphere filled.
+TEST(FormFactorTest, APointOnTheTrianglesPlaneSeesNothingOfIt) {
+    // The front face of cornell-original's tall block: tilted, so that its points round off it.
+    const Vec3 a(0.04f, 0, -0.09f), b(-0.53f, 0, 0.09f), up(0, 1.2f, 0);
+    const std::array<Vec3, 3> triangle{a, b, b + up};
+    const Vec3 n = normalize(cross(b - a, up));
+    for (const double h : {0.0, 1e-9, 1e-7, -1e-9}) {
+        for (const float s : {0.2f, 0.6f, 0.9f}) {
+            const Vec3 inside = a + s * (b - a) + (0.5f * s) * up;  // rounded to float
+            const Vec3d p = Vec3d(inside) + h * Vec3d(n);
+            EXPECT_EQ(FormFactor::pointToSideOfTriangle(p, Vec3d(n), triangle, n, Side::Front), 0)
+                << h << " " << s;
+            EXPECT_EQ(FormFactor::pointToSideOfTriangleApprox(p, Vec3d(n), triangle, n, Side::Front,
+                                                              0.5, 1.44),
+                      0)
+                << h << " " << s;
+        }
+    }
+    const Vec3d near = Vec3d(a + 0.5f * (b - a) + 0.4f * up) + 1e-3 * Vec3d(n);
+    EXPECT_GT(FormFactor::pointToSideOfTriangle(near, -Vec3d(n), triangle, n, Side::Front), 0.99);
+}
+
 // Two unit squares; elements of 1/32 make the area integral's quadrature error far below the
 // tolerance (2e-4, about 0.1%).
 struct SquarePair {
