@@ -2,14 +2,18 @@
 # Cluster rendering (docs/CLUSTER.md), measured by hyperfine in one run:
 # - whole-process time of the Whitted scene with 1 process of 1 thread, 2 processes of 1 thread
 #   (the aim: at least 1.9x on 2 cores) and 1 process of 2 threads, at 640 x 480 and 1280 x 960
-#   (16 spp), where mpirun's start-up weighs less;
+#   (16 spp), where mpirun's start-up weighs less, or at the sizes given (WIDTHxHEIGHT);
 # - mpirun's start-up (2 x lancer --version);
 # - the tile protocol's rate: a scene of nothing (each tile a few tens of microseconds) at
 #   4096 x 4096, 1 spp (65,536 tiles), in 1 process of 1 and 2 threads and in 2 processes of 1.
-# Usage: bench/cluster_scaling.sh [runs]   (from the source tree, after a release build)
+# Usage: bench/cluster_scaling.sh [runs] [WIDTHxHEIGHT...]   (from the source tree, after a
+# release build)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 runs="${1:-3}"
+shift || true
+sizes=("$@")
+[ ${#sizes[@]} -gt 0 ] || sizes=(640x480 1280x960)
 lancer="$PWD/bin/lancer"
 scene="$PWD/scenes/whitted.json"
 out="$(mktemp -d)"
@@ -18,8 +22,8 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 lscpu | grep -E "Model name" | sed 's/^/# /'
 echo "# SIMD: $(grep -o -E 'avx512[a-z]*|avx2' /proc/cpuinfo | sort -u | tr '\n' ' ')"
 echo "# load: $(cut -d' ' -f1-3 /proc/loadavg)"
-for size in "640 480" "1280 960"; do
-    set -- $size
+for size in "${sizes[@]}"; do
+    set -- ${size/x/ }
     render=(--width "$1" --height "$2" --spp 16 --quiet)
     hyperfine --runs "$runs" --warmup 1 --export-markdown "$out/render.md" \
         -n "$1 x $2: 1 process x 1 thread" "$lancer $scene -o $out/a.pfm --threads 1 ${render[*]}" \

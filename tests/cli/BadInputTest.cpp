@@ -330,6 +330,13 @@ const BadInput kBadInputs[] = {
      "corrupt or truncated PFM",
      2,
      {{"t.pfm", "corpus:image/pfm-short-of-its-pixels.pfm"}}},
+    // Found by fuzz_image: 43 bytes declaring 9000 x 10000 grey pixels took 10 s under ASan.
+    {"TexturePgmShortOfItsPixels",
+     texturedScene("t.pgm"),
+     kRender,
+     "its pixel data ends before the rows its header declares",
+     2,
+     {{"t.pgm", "corpus:image/pgm-short-of-its-pixels.pgm"}}},
     {"TextureTgaClaimingHugeSize",
      texturedScene("t.tga"),
      kRender,
