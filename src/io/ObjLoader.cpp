@@ -249,14 +249,7 @@ public:
         }
         facesWithBadNormals_ += badNormal;
         facesWithBadUvs_ += badUv;
-        PolygonTriangulator::triangulate(facePositions_, faceTriangles_);
-        std::erase_if(faceTriangles_, [&](const CornerTriple& t) {
-            const Vec3& p0 = facePositions_[t[0]];
-            const bool zeroArea =
-                !(length(cross(facePositions_[t[1]] - p0, facePositions_[t[2]] - p0)) > 0);
-            zeroAreaTriangles_ += zeroArea;
-            return zeroArea;
-        });
+        zeroAreaTriangles_ += triangulateLessZeroArea(facePositions_, faceTriangles_);
         if (faceTriangles_.empty()) return;
         const std::uint32_t slot = materialSlot(material);
         for (const CornerTriple& triangle : faceTriangles_) {
@@ -333,9 +326,7 @@ private:
         Vec3 normal;
         if (key.normal >= 0) {
             const tinyobj::real_t* n = &obj_.attrib.normals[3 * std::size_t(key.normal)];
-            const Vec3 given(n[0], n[1], n[2]);
-            // A zero or broken normal stays zero: "none", shaded flat.
-            if (isFinite(given) && length(given) > 0) normal = normalize(given);
+            normal = usableNormal(Vec3(n[0], n[1], n[2]));
         }
         hasNormals_ |= normal != Vec3();
         mesh_->normals.push_back(normal);

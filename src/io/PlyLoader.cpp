@@ -195,6 +195,7 @@ private:
 
 // What a vertex property is to lancer.
 enum class VertexRole { Ignored, X, Y, Z, NormalX, NormalY, NormalZ, U, V, Colour };
+constexpr std::size_t kVertexRoles = std::size_t(VertexRole::Colour) + 1;
 
 VertexRole roleOf(const PlyProperty& property) {
     static const std::pair<const char*, VertexRole> kRoles[] = {
@@ -254,14 +255,12 @@ public:
         return std::move(faces_);
     }
 
-    bool hasNormals() const { return hasNormals_; }
-    bool hasUvs() const { return hasUvs_; }
     bool hasColours() const { return hasColours_; }
 
 private:
     void readVertices(const PlyElement& element) {
         std::vector<VertexRole> roles;
-        bool present[10] = {};
+        bool present[kVertexRoles] = {};
         for (const PlyProperty& property : element.properties) {
             roles.push_back(roleOf(property));
             present[int(roles.back())] = true;
@@ -278,7 +277,7 @@ private:
         mesh_.positions.reserve(count);
         if (hasNormals_) mesh_.normals.reserve(count);
         if (hasUvs_) mesh_.uvs.reserve(count);
-        float values[10] = {};
+        float values[kVertexRoles] = {};
         for (std::size_t i = 0; i < count; ++i) {
             for (std::size_t p = 0; p < roles.size(); ++p) {
                 const PlyProperty& property = element.properties[p];
@@ -291,11 +290,9 @@ private:
             mesh_.positions.emplace_back(value(VertexRole::X), value(VertexRole::Y),
                                          value(VertexRole::Z));
             if (hasNormals_) {
-                const Vec3 given(value(VertexRole::NormalX), value(VertexRole::NormalY),
-                                 value(VertexRole::NormalZ));
-                // A zero or broken normal stays zero: "none", shaded flat.
-                const bool usable = isFinite(given) && length(given) > 0;
-                mesh_.normals.push_back(usable ? normalize(given) : Vec3());
+                mesh_.normals.push_back(
+                    usableNormal(Vec3(value(VertexRole::NormalX), value(VertexRole::NormalY),
+                                      value(VertexRole::NormalZ))));
             }
             if (hasUvs_) {
                 const Vec2 uv(value(VertexRole::U), value(VertexRole::V));
@@ -592,13 +589,8 @@ public:
 
 private:
     void addTriangles(std::span<const std::uint32_t> face) {
-        PolygonTriangulator::triangulate(corners_, triangles_);
+        zeroArea_ += triangulateLessZeroArea(corners_, triangles_);
         for (const PolygonTriangulator::CornerTriple& t : triangles_) {
-            const Vec3& p0 = corners_[t[0]];
-            if (!(length(cross(corners_[t[1]] - p0, corners_[t[2]] - p0)) > 0)) {
-                ++zeroArea_;
-                continue;
-            }
             for (const std::size_t corner : t)
                 mesh_.indices.push_back(face[corner]);
             mesh_.faceMaterials.push_back(0);
