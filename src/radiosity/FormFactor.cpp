@@ -57,18 +57,19 @@ double FormFactor::pointToTriangle(const Vec3d& p, const Vec3d& n,
 
 namespace {
 
-// Whether p is on the side `side` of the triangle's plane, farther from it than the rounding of
-// float positions: a point within that of the plane (an element's corner or gather point on a
-// coplanar neighbour) sees the triangle edge-on, whatever the rounding says, and its form factor
-// is 0. Without the margin, the contour integral from a point a rounding error in front of a
-// coplanar triangle whose outline it is in came out as 1 (the triangle filling the hemisphere):
-// bright dots at the vertices of cornell-original's tall block.
-bool clearlyOnSide(const Vec3d& p, const std::array<Vec3, 3>& triangle, const Vec3& triangleNormal,
-                   Side side) {
+// p's height over the triangle's plane when p is on the side `side` of it, farther from it than
+// the rounding of float positions; 0 otherwise. A point within that of the plane (an element's
+// corner or gather point on a coplanar neighbour) sees the triangle edge-on, whatever the
+// rounding says, and its form factor is 0. Without the margin, the contour integral from a point
+// a rounding error in front of a coplanar triangle whose outline it is in came out as 1 (the
+// triangle filling the hemisphere): bright dots at the vertices of cornell-original's tall block.
+double heightOnSide(const Vec3d& p, const std::array<Vec3, 3>& triangle, const Vec3& triangleNormal,
+                    Side side) {
     const double height = dot(Vec3d(triangleNormal), p - Vec3d(triangle[0]));
     const double scale = std::max(maxComponent(abs(p)), maxComponent(abs(Vec3d(triangle[0]))));
     const double margin = 1e-5 * scale;  // about 100 float roundings of the coordinates
-    return side == Side::Front ? height > margin : height < -margin;
+    const bool onSide = side == Side::Front ? height > margin : height < -margin;
+    return onSide ? height : 0;
 }
 
 }  // namespace
@@ -76,7 +77,7 @@ bool clearlyOnSide(const Vec3d& p, const std::array<Vec3, 3>& triangle, const Ve
 double FormFactor::pointToSideOfTriangle(const Vec3d& p, const Vec3d& n,
                                          const std::array<Vec3, 3>& triangle,
                                          const Vec3& triangleNormal, Side triangleSide) {
-    if (!clearlyOnSide(p, triangle, triangleNormal, triangleSide)) return 0;
+    if (heightOnSide(p, triangle, triangleNormal, triangleSide) == 0) return 0;
     return pointToTriangle(p, n, triangle);
 }
 
@@ -89,8 +90,8 @@ double FormFactor::pointToSideOfTriangleApprox(const Vec3d& p, const Vec3d& n,
     const double d2 = dot(towards, towards);
     if (!(d2 > kFarField * kFarField * longestEdgeSquared))
         return pointToSideOfTriangle(p, n, triangle, triangleNormal, triangleSide);
-    if (!clearlyOnSide(p, triangle, triangleNormal, triangleSide)) return 0;
-    const double height = dot(Vec3d(triangleNormal), p - Vec3d(triangle[0]));
+    const double height = heightOnSide(p, triangle, triangleNormal, triangleSide);
+    if (height == 0) return 0;
     const double cosP = dot(n, towards);
     if (!(cosP > 0)) return 0;
     // cos(theta_t) d = |height| to the plane, cos(theta_p) d = n . towards.
