@@ -158,35 +158,21 @@ TEST(CliClusterErrors, WindowIsRefusedUnderMpirun) {
     EXPECT_EQ(reports, 1) << run;
 }
 
-// A render that takes a few seconds on three processes of one thread.
-const std::vector<std::string> kLongRender = {"scene.json", "-o",        "out.pfm", "--width",
-                                              "320",        "--height",  "240",     "--spp",
-                                              "64",         "--threads", "1",       "--quiet"};
-
-TEST(CliClusterInterrupt, CtrlCSavesTheFinishedTilesAndResumeFinishesThemBitForBit) {
-    const TempFolder folder;
-    folder.write("scene.json", loadWhittedScene().dump());
-    const RunResult whole = runLancer(kLongRender, folder.path());
-    ASSERT_EQ(whole.exitStatus, 0) << whole;
-    fs::rename(folder / "out.pfm", folder / "whole.pfm");
-    {
-        // mpirun turns the Ctrl-C into SIGTERM for every process, and reports its own status.
-        LancerProcess run(mpirun(3, kLongRender), folder.path(), 0, LANCER_MPIRUN);
-        std::this_thread::sleep_for(std::chrono::milliseconds(1500));
-        run.sendSignal(SIGINT);
-        const RunResult stopped = run.wait();
-        ASSERT_FALSE(stopped.timedOut) << stopped;
-        ASSERT_NE(stopped.standardError.find("lancer: interrupted; the part rendered so far"),
-                  std::string::npos)
-            << stopped << " (the render ended before the signal?)";
-    }
-    ASSERT_TRUE(fs::exists(folder / "out.pfm.resume"));
-    const Image partial = loadImage(folder / "out.pfm");
-    EXPECT_EQ(partial.width, 320);
-    const RunResult resumed = runUnderMpirun(3, concat(kLongRender, {"--resume"}), folder.path());
-    ASSERT_EQ(resumed.exitStatus, 0) << resumed;
-    EXPECT_TRUE(readFile(folder / "out.pfm") == readFile(folder / "whole.pfm"));
-    EXPECT_FALSE(fs::exists(folder / "out.pfm.resume"));
+// A render that takes some four seconds on three processes of one thread on the build machine
+// (a Ctrl-C sent a second into it must find it still rendering, on a machine twice as fast).
+std::vector<std::string> longRender(int threads = 1) {
+    return {"scene.json",
+            "-o",
+            "out.pfm",
+            "--width",
+            "320",
+            "--height",
+            "240",
+            "--spp",
+            "128",
+            "--threads",
+            std::to_string(threads),
+            "--quiet"};
 }
 
 // The lancer processes mpirun started (its children), newest last.
@@ -206,15 +192,67 @@ std::vector<int> childrenOf(int parent) {
     return children;
 }
 
+// Whether the process has its own handler for the signal (the SigCgt mask of /proc/PID/status).
+bool catches(int pid, int signal) {
+    std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+    std::string line;
+    while (std::getline(status, line))
+        if (line.rfind("SigCgt:", 0) == 0)
+            return (std::stoull(line.substr(7), nullptr, 16) >> (signal - 1) & 1) != 0;
+    return false;
+}
+
+// Waits (up to 20 s) until mpirun has started `count` lancer processes, each with its interrupt
+// handler in place: a signal sent sooner, on a loaded machine, would end a process that has not
+// yet started rendering. Returns them, newest last.
+std::vector<int> waitForRenderingProcesses(int mpirunPid, std::size_t count) {
+    std::vector<int> processes;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (std::chrono::steady_clock::now() < deadline) {
+        processes = childrenOf(mpirunPid);
+        if (processes.size() == count && std::all_of(processes.begin(), processes.end(),
+                                                     [](int pid) { return catches(pid, SIGTERM); }))
+            break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return processes;
+}
+
+TEST(CliClusterInterrupt, CtrlCSavesTheFinishedTilesAndResumeFinishesThemBitForBit) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    // The reference on every core, to save time: the image does not depend on the threads.
+    const RunResult whole = runLancer(longRender(0), folder.path());
+    ASSERT_EQ(whole.exitStatus, 0) << whole;
+    fs::rename(folder / "out.pfm", folder / "whole.pfm");
+    {
+        // mpirun turns the Ctrl-C into SIGTERM for every process, and reports its own status.
+        LancerProcess run(mpirun(3, longRender()), folder.path(), 0, LANCER_MPIRUN);
+        ASSERT_EQ(waitForRenderingProcesses(run.pid(), 3).size(), 3u)
+            << "mpirun did not start three lancer processes";
+        // Long enough for the scene to load and some tiles to finish; the render takes seconds.
+        std::this_thread::sleep_for(std::chrono::milliseconds(700));
+        run.sendSignal(SIGINT);
+        const RunResult stopped = run.wait();
+        ASSERT_FALSE(stopped.timedOut) << stopped;
+        ASSERT_NE(stopped.standardError.find("lancer: interrupted; the part rendered so far"),
+                  std::string::npos)
+            << stopped << " (the render ended before the signal?)";
+    }
+    ASSERT_TRUE(fs::exists(folder / "out.pfm.resume"));
+    const Image partial = loadImage(folder / "out.pfm");
+    EXPECT_EQ(partial.width, 320);
+    const RunResult resumed = runUnderMpirun(3, concat(longRender(), {"--resume"}), folder.path());
+    ASSERT_EQ(resumed.exitStatus, 0) << resumed;
+    EXPECT_TRUE(readFile(folder / "out.pfm") == readFile(folder / "whole.pfm"));
+    EXPECT_FALSE(fs::exists(folder / "out.pfm.resume"));
+}
+
 TEST(CliClusterInterrupt, AKilledProcessStopsTheRunWithinSeconds) {
     const TempFolder folder;
     folder.write("scene.json", loadWhittedScene().dump());
-    LancerProcess run(mpirun(3, kLongRender), folder.path(), 0, LANCER_MPIRUN);
-    std::vector<int> processes;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    while ((processes = childrenOf(run.pid())).size() < 3 &&
-           std::chrono::steady_clock::now() < deadline)
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    LancerProcess run(mpirun(3, longRender()), folder.path(), 0, LANCER_MPIRUN);
+    const std::vector<int> processes = waitForRenderingProcesses(run.pid(), 3);
     ASSERT_EQ(processes.size(), 3u) << "mpirun did not start three lancer processes";
     std::this_thread::sleep_for(std::chrono::milliseconds(1000));
     kill(processes.back(), SIGKILL);
