@@ -53,6 +53,23 @@ bool startVideo(std::string& error) {
     return false;
 }
 
+// Returns when SDL has events queued, or after `timeout`. Not SDL_WaitEventTimeout: to wake
+// itself, that sends an X event to the window over a second connection, and when the X server
+// handled it after the window was closed (a loaded machine), Xlib ended the program with
+// "BadWindow" at SDL_Quit. Short sleeps between polls send nothing.
+void waitForEvents(std::chrono::milliseconds timeout) {
+    constexpr std::chrono::milliseconds kPollStep{4};
+    const auto deadline = std::chrono::steady_clock::now() + timeout;
+    for (;;) {
+        SDL_PumpEvents();
+        if (SDL_HasEvents(SDL_FIRSTEVENT, SDL_LASTEVENT)) return;
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+            deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) return;
+        SDL_Delay(static_cast<Uint32>(std::min(left, kPollStep).count()));
+    }
+}
+
 }  // namespace
 
 Viewer::Viewer(const std::string& name, int width, int height, const ToneMapper& toneMapper)
@@ -150,12 +167,10 @@ Image Viewer::image() const {
 }
 
 std::vector<ViewerEvent> Viewer::poll(std::chrono::milliseconds timeout) {
+    waitForEvents(timeout);
     std::vector<ViewerEvent> events;
     SDL_Event event;
-    for (bool waited = false;
-         waited ? SDL_PollEvent(&event)
-                : SDL_WaitEventTimeout(&event, static_cast<int>(timeout.count()));
-         waited = true) {
+    while (SDL_PollEvent(&event)) {
         switch (event.type) {
             case SDL_QUIT:
                 events.push_back({ViewerEvent::Kind::Close});
