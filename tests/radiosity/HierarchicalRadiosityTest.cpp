@@ -271,6 +271,48 @@ TEST(HierarchicalRadiosityTest, NoBrightDotsOnAFaceLitAtAGrazingAngle) {
     EXPECT_LT(worst, 1.2f);
 }
 
+// A floor under a ceiling of many dim emitting squares that reflect nothing (each under 1% of the
+// power: none a lamp), with a black wall standing on the floor. Beside the wall's foot the wall
+// hides part of the ceiling; the solution's irradiance there, against a Monte Carlo estimate of the
+// exact integral (nothing else reflects: E = Le sum of cos cos / r^2 over the visible ceiling).
+// Vertices took the visibility a link's few rays found from its receiver's points, and those rays
+// had all got through for links the wall hides from the foot: 13% and 9% too bright 3 and 8 cm from
+// the wall (within 0.5-3.6% since, at the 4 points).
+TEST(HierarchicalRadiosityTest, AWallStandingOnTheFloorShadowsItsFoot) {
+    constexpr float kHeight = 1, kWall = 0.5f;
+    Scene scene =
+        loadScene(square(Vec3(-2, 0, 2), Vec3(4, 0, 0), Vec3(0, 0, -4)) + ", " +
+                      tiledSquare(Vec3(-2, kHeight, -2), Vec3(4, 0, 0), Vec3(0, 0, 4), 16, "lamp") +
+                      ", " + square(Vec3(-2, 0, 0), Vec3(4, 0, 0), Vec3(0, kWall, 0), "black"),
+                  R"(, "radiosity": {"patch_size": 0.5, )" + kHierarchical + "}");
+    HierarchicalRadiosity solver(scene);
+    const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
+    ASSERT_TRUE(solution);
+    const Vec3 up(0, 1, 0);
+    for (float z : {0.03f, 0.08f, 0.15f, 0.3f}) {
+        const Vec3 p(0.13f, 0, z);
+        // Stratified over the ceiling, 400 x 400 points.
+        constexpr int kSide = 400;
+        double sum = 0;
+        for (int i = 0; i < kSide; ++i)
+            for (int j = 0; j < kSide; ++j) {
+                const auto at = [](int k) {
+                    return -2 + 4 * (static_cast<float>(k) + 0.5f) / kSide;
+                };
+                const Vec3 q(at(i), kHeight, at(j));
+                const Vec3 d = q - p;
+                const Ray ray{p + Vec3(0, 1e-4f, 0), d};
+                if (scene.intersect(ray, 0.999f)) continue;
+                const double r2 = dot(d, d);
+                sum += static_cast<double>(d.y) * d.y / (r2 * r2);
+            }
+        const double expected = kEmission * sum * 16.0 / (kSide * kSide);
+        const auto E = solution->irradiance(p, up, up);
+        ASSERT_TRUE(E);
+        EXPECT_NEAR(E->r, expected, 0.05 * expected) << "z " << z;
+    }
+}
+
 // The box with each wall in 4 x 4 squares, lit by a point light over a black square, clustered.
 Scene clusteredRoom() {
     return loadScene(

@@ -13,7 +13,8 @@ Scene loadScene(const std::string& objects, const std::string& extra) {
     const std::string text = R"({
       "camera": {"position": [0.5, 0.5, 0.5], "look_at": [0.5, 0.5, -1]},
       "materials": {"white": {"diffuse": 0.5}, "black": {"diffuse": 0},
-                    "glow": {"diffuse": 0.6, "emission": 0.25}},
+                    "glow": {"diffuse": 0.6, "emission": 0.25},
+                    "lamp": {"diffuse": 0, "emission": 0.25}},
       "objects": [)" + objects +
                              "]" + extra + "}";
     std::vector<std::string> warnings;
