@@ -41,8 +41,8 @@ constexpr double kNearField = 0.02;
 constexpr double kLeafNearField = 1e-3;
 
 // A source sending at least this fraction of the power put in (a lamp) has its links' visibility
-// traced with four times the rays, and again at every vertex in the final gather, even where its
-// link's rays all got through (a shadow may cross a large link between the rays).
+// traced with four times the rays (a shadow may cross a large link between the rays), and is
+// never clustered.
 constexpr double kBrightSource = 1e-2;
 
 // Memory bounds (a link takes 32 bytes, a leaf term 20): once the hierarchy holds this many
@@ -695,8 +695,8 @@ Color HierarchicalRadiosity::gatherFrom(const Element& at, const Link& link, std
     // Visibility traced again from the vertex for every link, not taken from the link: the few
     // rays of a large link, from points of its receiver, may all get through where an obstacle
     // hides the source from the vertex (beside the foot of a wall or a block standing on the
-    // floor, which came out too bright). One ray for the weak sources: it costs a fifth of the
-    // solve on the Cornell box, and the vertices' errors average out over their many links.
+    // floor, which came out too bright). One ray for the weak sources: a third more solve time on
+    // the Cornell box, and the vertices' errors average out over their many links.
     const bool strong = B.average() * element.area >= kStrongLink * initialPower_;
     return B * formFactor_.elementToTriangle(
                    at, link.receiverSide, corners, mesh_.patches[element.patch], link.sourceSide,

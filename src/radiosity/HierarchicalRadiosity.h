@@ -41,8 +41,8 @@ class VertexSmoothing;
 //  6. a last round of iterations where each leaf gathers through the links of itself and its
 //     ancestors with form factors from the leaf itself (in a closed room they add up to 1);
 //  7. the irradiance at every vertex of the leaves is gathered there through the same links,
-//     from the children of the sources it sees large, visibility traced again for the partly
-//     occluded links.
+//     from the children of the sources it sees large, each link's visibility traced again from
+//     the vertex.
 // With clusters ("clusters": true; Smits, Arvo and Greenberg 1994; Sillion 1995), step 2 starts
 // instead from the top cluster's link to itself (see ClusterHierarchy): a cluster's link to
 // itself becomes its children's links to each other and to themselves, and a link with a cluster
