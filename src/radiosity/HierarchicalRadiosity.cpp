@@ -666,6 +666,8 @@ bool HierarchicalRadiosity::iterate(bool resolved, const std::function<bool()>& 
     for (int k = 0; iterations_ < static_cast<std::uint64_t>(settings_.maxShots); ++k) {
         residual_ = iteration(resolved);
         if (!carryOn()) return false;
+        // An emission so large that the power overflows never converges: stop at once.
+        if (!std::isfinite(residual_)) break;
         // The power still to come, if each iteration changes it by the same ratio as the last.
         const double ratio = k > 0 && previous > 0 ? std::min(residual_ / previous, 0.99) : 0.99;
         previous = residual_;

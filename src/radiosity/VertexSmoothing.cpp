@@ -51,7 +51,10 @@ VertexSmoothing::VertexSmoothing(const RadiosityMesh& mesh, std::vector<std::uin
             for (std::size_t side = 0; side < 2; ++side)
                 vertexIrradiance[vertex][side] += e.irradiance[side] * e.area;
             Site& site = sites_[vertex];
-            if (brightness > site.brightness) site = {leaves_[i], k, brightness};
+            // (The first leaf stands where the brightness is NaN, from an emission so large that
+            // the irradiance overflows: no comparison is true.)
+            if (site.leaf == Element::kNone || brightness > site.brightness)
+                site = {leaves_[i], k, brightness};
         }
     }
     for (std::size_t v = 0; v < weights.size(); ++v)

@@ -386,6 +386,25 @@ TEST(HierarchicalRadiosityTest, ClustersChangeTheFingerprint) {
               HierarchicalRadiosity(with).fingerprint());
 }
 
+// An emission near the largest float (a valid scene): the irradiance overflows to infinity and
+// NaN, and the solve must still end, at once, with a solution (the vertices' gather sites were
+// chosen by comparing brightnesses, all false with NaN: no site, and a crash; and the iterations
+// went on to max_shots, their NaN residual never below the threshold).
+TEST(HierarchicalRadiosityTest, AnOverflowingEmissionEndsTheSolveWithoutACrash) {
+    for (const std::string& settings : {kHierarchical, kClustered}) {
+        Scene scene = loadScene(
+            closedBox("white", 2) + ", " +
+                square(Vec3(0.4f, 0.99f, 0.6f), Vec3(0.2f, 0, 0), Vec3(0, 0, -0.2f), "blinding") +
+                ", " + square(Vec3(0.2f, 0.3f, 0.2f), Vec3(0.3f, 0, 0), Vec3(0, 0, 0.3f), "black"),
+            R"(, "radiosity": {"patch_size": 0.5, )" + settings + "}");
+        HierarchicalRadiosity solver(scene);
+        const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
+        ASSERT_TRUE(solution) << settings;
+        // Not the 100,000 iterations of max_shots, waiting for a NaN residual to fall.
+        EXPECT_LT(solution->statistics().shots, 100u) << settings;
+    }
+}
+
 TEST(HierarchicalRadiosityTest, AnotherFingerprintThanProgressive) {
     Scene hierarchical = furnaceBox();
     Scene progressive =

@@ -14,7 +14,8 @@ Scene loadScene(const std::string& objects, const std::string& extra) {
       "camera": {"position": [0.5, 0.5, 0.5], "look_at": [0.5, 0.5, -1]},
       "materials": {"white": {"diffuse": 0.5}, "black": {"diffuse": 0},
                     "glow": {"diffuse": 0.6, "emission": 0.25},
-                    "lamp": {"diffuse": 0, "emission": 0.25}},
+                    "lamp": {"diffuse": 0, "emission": 0.25},
+                    "blinding": {"diffuse": 0.6, "emission": 3e38}},
       "objects": [)" + objects +
                              "]" + extra + "}";
     std::vector<std::string> warnings;
