@@ -293,12 +293,10 @@ TEST(HierarchicalRadiosityTest, AWallStandingOnTheFloorShadowsItsFoot) {
         const Vec3 p(0.13f, 0, z);
         // Stratified over the ceiling, 400 x 400 points.
         constexpr int kSide = 400;
+        const auto at = [](int k) { return -2 + 4 * (static_cast<float>(k) + 0.5f) / kSide; };
         double sum = 0;
         for (int i = 0; i < kSide; ++i)
             for (int j = 0; j < kSide; ++j) {
-                const auto at = [](int k) {
-                    return -2 + 4 * (static_cast<float>(k) + 0.5f) / kSide;
-                };
                 const Vec3 q(at(i), kHeight, at(j));
                 const Vec3 d = q - p;
                 const Ray ray{p + Vec3(0, 1e-4f, 0), d};
