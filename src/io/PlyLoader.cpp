@@ -351,8 +351,11 @@ private:
             if (error != std::errc() || end != token.data() + token.size())
                 fail("a list's count " + quoted(token) + " is not a count");
         } else {
+            // A count typed float can hold a fraction, or a value beyond any integer's range.
             const double value = decode(property.countType);
-            if (!(value >= 0)) fail("a list's count " + numberText(value) + " is not a count");
+            if (!(value >= 0 && value == std::floor(value)))
+                fail("a list's count " + numberText(value) + " is not a count");
+            if (value > double(data_.size())) truncated();
             count = std::uint64_t(value);
         }
         const std::size_t itemBytes = ascii() ? 2 : bytesOf(property.type);

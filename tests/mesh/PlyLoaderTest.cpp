@@ -202,6 +202,14 @@ TEST(PlyErrors, EachBadFileIsOneInputErrorNamingIt) {
          "not a valid PLY file: the \"face\" element has no vertex_indices list"},
         {"negative-list-count-binary.ply",
          "not a valid PLY file: a list's count -1 is not a count"},
+        // Counts typed float. fuzz_ply's file has a tiny count (it was read as 0) and then one of
+        // 7.9e34, whose conversion to an integer overflowed.
+        {"float-list-counts-found-by-fuzz-ply.ply",
+         "not a valid PLY file: a list's count 4.7409786883692068e-29 is not a count"},
+        {"huge-float-list-count.ply",
+         "is truncated: its header declares 1 \"face\" element, more than its body holds"},
+        {"fractional-float-list-count.ply",
+         "not a valid PLY file: a list's count 2.5 is not a count"},
         {"no-faces.ply", "no faces to render"},
         // Found by fuzz_ply: Assimp's parser never returned from it.
         {"carriage-return-before-end-header.ply",
