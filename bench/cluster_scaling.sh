@@ -3,7 +3,10 @@
 # - whole-process time of the Whitted scene with 1 process of 1 thread, 2 processes of 1 thread
 #   (the aim: at least 1.9x on 2 cores) and 1 process of 2 threads, at 640 x 480 and 1280 x 960
 #   (16 spp), where mpirun's start-up weighs less, or at the sizes given (WIDTHxHEIGHT);
-# - mpirun's start-up (2 x lancer --version);
+# - the same 2 processes with `--mca pml ob1`: Open MPI's default first tries its cm PML, whose
+#   probes of libfabric, PSM and PSM2 (Omni-Path and TrueScale adapters) take about 0.2 s of each
+#   run on a machine without them (docs/CLUSTER.md);
+# - mpirun's start-up (2 x lancer --version), by default and with `--mca pml ob1`;
 # - the tile protocol's rate: a scene of nothing (each tile a few tens of microseconds) at
 #   4096 x 4096, 1 spp (65,536 tiles), in 1 process of 1 and 2 threads and in 2 processes of 1.
 # Usage: bench/cluster_scaling.sh [runs] [WIDTHxHEIGHT...]   (from the source tree, after a
@@ -28,8 +31,10 @@ for size in "${sizes[@]}"; do
     hyperfine --runs "$runs" --warmup 1 --export-markdown "$out/render.md" \
         -n "$1 x $2: 1 process x 1 thread" "$lancer $scene -o $out/a.pfm --threads 1 ${render[*]}" \
         -n "$1 x $2: 2 processes x 1 thread" "mpirun --oversubscribe -np 2 $lancer $scene -o $out/b.pfm --threads 1 ${render[*]}" \
+        -n "$1 x $2: 2 processes x 1 thread, --mca pml ob1" "mpirun --oversubscribe --mca pml ob1 -np 2 $lancer $scene -o $out/f.pfm --threads 1 ${render[*]}" \
         -n "$1 x $2: 1 process x 2 threads" "$lancer $scene -o $out/c.pfm --threads 2 ${render[*]}"
-    cmp "$out/a.pfm" "$out/b.pfm" && cmp "$out/a.pfm" "$out/c.pfm" && echo "# the three images are byte-identical"
+    cmp "$out/a.pfm" "$out/b.pfm" && cmp "$out/a.pfm" "$out/c.pfm" && cmp "$out/a.pfm" "$out/f.pfm" &&
+        echo "# the four images are byte-identical"
     cat "$out/render.md"
 done
 echo '{"camera": {"position": [0, 0, 5], "look_at": [0, 0, 0]}, "background": 0.5}' > "$out/nothing.json"
@@ -43,4 +48,6 @@ for run in "1 process x 1 thread:$lancer $out/nothing.json -o $out/d.pfm --threa
 done
 cmp "$out/d.pfm" "$out/e.pfm" && echo "# byte-identical"
 hyperfine --runs "$runs" --warmup 1 -n "mpirun start-up (2 x lancer --version)" \
-    "mpirun --oversubscribe -np 2 $lancer --version" | grep -E "Time|Range"
+    "mpirun --oversubscribe -np 2 $lancer --version" \
+    -n "mpirun start-up, --mca pml ob1" "mpirun --oversubscribe --mca pml ob1 -np 2 $lancer --version" |
+    grep -E "Benchmark|Time|Range"
