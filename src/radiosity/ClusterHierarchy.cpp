@@ -30,8 +30,11 @@ ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::u
     clusters_.reserve(members_.size() - 1);
     build(mesh, 0, static_cast<std::uint32_t>(members_.size()), Element::kNone);
     areaBefore_.resize(members_.size() + 1, 0);
-    for (std::size_t i = 0; i < members_.size(); ++i)
-        areaBefore_[i + 1] = areaBefore_[i] + mesh.elements[members_[i]].area;
+    for (std::size_t i = 0; i < members_.size(); ++i) {
+        const Element& e = mesh.elements[members_[i]];
+        areaBefore_[i + 1] = areaBefore_[i] + e.area;
+        memberShapes_.push_back({e.centroid, e.normal, e.area});
+    }
 }
 
 std::uint32_t ClusterHierarchy::build(const RadiosityMesh& mesh, std::uint32_t first,

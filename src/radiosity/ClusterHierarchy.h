@@ -75,10 +75,14 @@ public:
     template <typename RadiosityOf>
     Color irradianceAt(const RadiosityMesh& mesh, std::uint32_t node, const Vec3& at,
                        RadiosityOf radiosityOf) const {
-        if (!isCluster(node)) return elementTerm(mesh, node, at, radiosityOf);
+        if (!isCluster(node)) {
+            const Element& e = mesh.elements[node];
+            return term({e.centroid, e.normal, e.area}, node, at, radiosityOf);
+        }
+        const Cluster& c = cluster(node);
         Color sum;
-        for (std::uint32_t e : members(cluster(node)))
-            sum += elementTerm(mesh, e, at, radiosityOf);
+        for (std::uint32_t i = c.firstMember; i < c.firstMember + c.memberCount; ++i)
+            sum += term(memberShapes_[i], members_[i], at, radiosityOf);
         return sum;
     }
 
@@ -95,17 +99,25 @@ public:
                         Vec2 u) const;
 
 private:
+    // What irradianceAt reads of an element, kept for the members in their order (an Element is
+    // 160 bytes, and the sums over large clusters were bound by loading them).
+    struct MemberShape {
+        Vec3 centroid;
+        Vec3 normal;
+        float area = 0;
+    };
+
+    // Element e's term of irradianceAt.
     template <typename RadiosityOf>
-    static Color elementTerm(const RadiosityMesh& mesh, std::uint32_t e, const Vec3& at,
-                             RadiosityOf radiosityOf) {
-        const Element& element = mesh.elements[e];
-        const Vec3 toward = at - element.centroid;
+    static Color term(const MemberShape& shape, std::uint32_t e, const Vec3& at,
+                      RadiosityOf radiosityOf) {
+        const Vec3 toward = at - shape.centroid;
         const float d2 = dot(toward, toward);
         if (!(d2 > 0)) return Color(0);
-        const float cosine = dot(element.normal, toward) / std::sqrt(d2);
+        const float cosine = dot(shape.normal, toward) / std::sqrt(d2);
         const Side side = cosine > 0 ? Side::Front : Side::Back;
         return radiosityOf(e, side) *
-               (element.area * std::abs(cosine) / (std::numbers::pi_v<float> * d2));
+               (shape.area * std::abs(cosine) / (std::numbers::pi_v<float> * d2));
     }
 
     // Builds the subtree over members_[first, first + count) and returns its node.
@@ -114,6 +126,7 @@ private:
 
     std::vector<Cluster> clusters_;
     std::vector<std::uint32_t> members_;     // root elements, each cluster's contiguous
+    std::vector<MemberShape> memberShapes_;  // in the order of members_
     std::vector<double> areaBefore_;         // area of members_[0, i), for sampling
     std::vector<std::uint32_t> rootParent_;  // per element, for the roots
 };

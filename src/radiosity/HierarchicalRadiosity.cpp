@@ -301,23 +301,21 @@ double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link) const {
            (link.spread + (link.partlyVisible() ? 1.0f : 0.0f));
 }
 
-std::array<Color, 2> HierarchicalRadiosity::received(const Element& element,
-                                                     const ClusterLink& link,
-                                                     const Color& atCenter) {
+std::optional<HierarchicalRadiosity::ReceivedShare> HierarchicalRadiosity::receivedShare(
+    const Element& element, const ClusterLink& link) {
     const Vec3 toward = link.sourceCenter - element.centroid;
     const float d2 = dot(toward, toward);
-    std::array<Color, 2> E;
-    if (!(d2 > 0)) return E;
+    if (!(d2 > 0)) return std::nullopt;
     const float cosine = dot(element.normal, toward) / std::sqrt(d2);
-    E[cosine > 0 ? 0 : 1] = (std::abs(cosine) * link.distance2 / d2) * atCenter;
-    return E;
+    return ReceivedShare{std::abs(cosine) * link.distance2 / d2,
+                         cosine > 0 ? Side::Front : Side::Back};
 }
 
 Color HierarchicalRadiosity::clusterLinkPower(const ClusterLink& link) const {
     const Color transfer = clusterTransfer(link);
     const auto power = [&](std::uint32_t e) {
-        const std::array<Color, 2> E = received(mesh_.elements[e], link, transfer);
-        return mesh_.elements[e].area * (E[0] + E[1]);
+        const std::optional<ReceivedShare> share = receivedShare(mesh_.elements[e], link);
+        return share ? mesh_.elements[e].area * (share->fraction * transfer) : Color(0);
     };
     if (!ClusterHierarchy::isCluster(link.receiver)) return power(link.receiver);
     Color sum;
@@ -403,11 +401,16 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
 
 std::array<Color, 2> HierarchicalRadiosity::clusterLinksAt(
     const Element& at, std::uint32_t leaf, const std::vector<Color>& perLink) const {
-    std::array<Color, 2> E;
+    // Two sums of their own, not an array indexed by the side: those made a chain of stores
+    // and loads through memory, this loop's cost.
+    Color front, back;
     const auto take = [&](std::uint32_t l) {
-        const std::array<Color, 2> share = received(at, clusterLinks_[l], perLink[l]);
-        for (std::size_t side = 0; side < 2; ++side)
-            E[side] += share[side];
+        const std::optional<ReceivedShare> share = receivedShare(at, clusterLinks_[l]);
+        if (!share) return;
+        if (share->side == Side::Front)
+            front += share->fraction * perLink[l];
+        else
+            back += share->fraction * perLink[l];
     };
     std::uint32_t root = leaf;
     for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e]) {
@@ -419,6 +422,9 @@ std::array<Color, 2> HierarchicalRadiosity::clusterLinksAt(
          c = clusters_.clusters()[c].parent)
         for (std::uint32_t l : clusterReceives_[c])
             take(l);
+    std::array<Color, 2> E;
+    E[sideIndex(Side::Front)] = front;
+    E[sideIndex(Side::Back)] = back;
     return E;
 }
 
@@ -426,7 +432,22 @@ std::vector<std::array<Color, 2>> HierarchicalRadiosity::gatherThroughClusters(
     const std::vector<Color>& perLink) const {
     std::vector<std::array<Color, 2>> gathered(mesh_.elements.size());
     if (clusters_.empty()) return gathered;
-    const std::vector<std::uint32_t> leaves = mesh_.leaves();
+    // The leaves of one root one after the other, the roots in the clusters' order: neighbours
+    // in this order share most of the links they walk, which then stay in cache (in the mesh's
+    // order, the walks were bound by loading the links).
+    std::vector<std::uint32_t> leaves, stack;
+    leaves.reserve(mesh_.elements.size());
+    for (std::uint32_t root : clusters_.members(clusters_.cluster(clusters_.top()))) {
+        stack.push_back(root);
+        while (!stack.empty()) {
+            const Element& e = mesh_.elements[stack.back()];
+            if (e.isLeaf()) leaves.push_back(stack.back());
+            stack.pop_back();
+            if (!e.isLeaf())
+                for (std::uint32_t c = e.firstChild; c < e.firstChild + 4; ++c)
+                    stack.push_back(c);
+        }
+    }
     parallelFor(leaves.size(), 64, [&](std::size_t i) {
         gathered[leaves[i]] = clusterLinksAt(mesh_.elements[leaves[i]], leaves[i], perLink);
     });

@@ -111,10 +111,15 @@ public:
     // The power (W per channel) a cluster link brings to its receiver's elements (a cluster's
     // members) from the present radiosities.
     Color clusterLinkPower(const ClusterLink& link) const;
-    // What an element of a link's receiver takes on each side of the irradiance `atCenter` the
-    // link brings at normal incidence to the receiver's centre.
-    static std::array<Color, 2> received(const Element& element, const ClusterLink& link,
-                                         const Color& atCenter);
+    // The fraction an element of a link's receiver takes, on one side, of the irradiance the link
+    // brings at normal incidence to the receiver's centre: none for an element at the source's
+    // centre.
+    struct ReceivedShare {
+        float fraction = 0;
+        Side side = Side::Front;
+    };
+    static std::optional<ReceivedShare> receivedShare(const Element& element,
+                                                      const ClusterLink& link);
 
     // Radiosity (W/m^2) leaving each side of each element, as the last iteration left it.
     const std::vector<std::array<Color, 2>>& radiosity() const { return radiosity_; }
@@ -169,7 +174,7 @@ private:
                             std::uint64_t seed, std::uint64_t& rayCount) const;
     // What the cluster links received by a leaf, its ancestors and the clusters above its root
     // bring to `at` (the leaf, or a gather site on it) when each brings `perLink` (at normal
-    // incidence, at its receiver's centre): see received().
+    // incidence, at its receiver's centre): see receivedShare().
     std::array<Color, 2> clusterLinksAt(const Element& at, std::uint32_t leaf,
                                         const std::vector<Color>& perLink) const;
     // The same at every leaf (indexed by element).
