@@ -337,6 +337,23 @@ const BadInput kBadInputs[] = {
      "its pixel data ends before the rows its header declares",
      2,
      {{"t.pgm", "corpus:image/pgm-short-of-its-pixels.pgm"}}},
+    // Found by fuzz_image: 49 bytes of icon, whose decoder asked for 3.2 MB into a 2560-byte
+    // buffer past the end of the file; the reader filled the request with zeros (under ASan, a
+    // heap overflow).
+    {"TextureIcoAskingPastItsBuffer",
+     texturedScene("t.ico"),
+     kRender,
+     "corrupt or truncated ICO",
+     2,
+     {{"t.ico", "corpus:image/ico-asking-past-its-buffer.ico"}}},
+    // Found by fuzz_image: 25 bytes of TGA of image type 0 and 78 bits a pixel, for which
+    // FreeImage asked malloc for 18 exabytes (under ASan, an abort).
+    {"TextureTgaOfNoImageType",
+     texturedScene("t.tga"),
+     kRender,
+     "its header's image type, pixel depth or colour map is not one TGA defines",
+     2,
+     {{"t.tga", "corpus:image/tga-of-no-image-type.tga"}}},
     {"TextureTgaClaimingHugeSize",
      texturedScene("t.tga"),
      kRender,
