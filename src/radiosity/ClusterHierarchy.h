@@ -99,8 +99,8 @@ public:
                         Vec2 u) const;
 
 private:
-    // What irradianceAt reads of an element, kept for the members in their order (an Element is
-    // 160 bytes, and the sums over large clusters were bound by loading them).
+    // What irradianceAt reads of an element, kept for the members in their order: a sum over a
+    // large cluster reads these in a row instead of 160-byte Elements here and there.
     struct MemberShape {
         Vec3 centroid;
         Vec3 normal;

@@ -433,8 +433,7 @@ std::vector<std::array<Color, 2>> HierarchicalRadiosity::gatherThroughClusters(
     std::vector<std::array<Color, 2>> gathered(mesh_.elements.size());
     if (clusters_.empty()) return gathered;
     // The leaves of one root one after the other, the roots in the clusters' order: neighbours
-    // in this order share most of the links they walk, which then stay in cache (in the mesh's
-    // order, the walks were bound by loading the links).
+    // in this order share most of the links they walk, which then stay in cache.
     std::vector<std::uint32_t> leaves, stack;
     leaves.reserve(mesh_.elements.size());
     for (std::uint32_t root : clusters_.members(clusters_.cluster(clusters_.top()))) {
@@ -465,7 +464,7 @@ void HierarchicalRadiosity::updateFromClusters() {
 void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
     std::size_t prepared = mesh_.elements.size();
     // Kept from round to round: fresh vectors of millions of decisions had the kernel clear
-    // their pages every round (8% of a clustered solve).
+    // their pages every round.
     std::vector<Decision> decisions;
     std::vector<Candidate> next;
     while (!candidates.empty() && !cancelled()) {
