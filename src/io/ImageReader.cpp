@@ -126,12 +126,6 @@ bool exrHeadersFitInFile(std::FILE* file) {
     return fits;
 }
 
-// FreeImage's TGA decoder sizes its run-length read cache as (bytes of pixel data) / rows: when
-// that is less than a pixel it reads out of bounds, and when it is zero it frees the bitmap and
-// still returns it. A TGA 2.0 postage stamp (thumbnail) claiming more pixels than its space holds
-// is copied from beyond its buffer. Both mean a damaged file: run-length packets never cross rows,
-// so each row takes at least one packet, a header byte and a pixel. An uncompressed file must hold
-// all its pixels.
 // The TGA header's image type (1-3 uncompressed, 9-11 run-length encoded), pixel depth and colour
 // map entry size must be the specification's: FreeImage 3.18 takes others as they come, and on a
 // 25-byte file of type 0 (no image) and 78 bits a pixel asked malloc for 18 exabytes (fuzz_image).
@@ -141,13 +135,18 @@ bool tgaHeaderIsValid(std::FILE* file) {
     const bool typeKnown =
         (imageType >= 1 && imageType <= 3) || (imageType >= 9 && imageType <= 11);
     const bool depthKnown = depth == 8 || depth == 15 || depth == 16 || depth == 24 || depth == 32;
-    const std::uint32_t entryBits = byteAt(7);
-    const bool mapKnown =
-        byteAt(1) == 0 || (byteAt(1) == 1 && (entryBits == 15 || entryBits == 16 ||
-                                              entryBits == 24 || entryBits == 32));
+    const std::uint32_t mapType = byteAt(1), entryBits = byteAt(7);
+    const bool mapKnown = mapType == 0 || (mapType == 1 && (entryBits == 15 || entryBits == 16 ||
+                                                            entryBits == 24 || entryBits == 32));
     return typeKnown && depthKnown && mapKnown;
 }
 
+// FreeImage's TGA decoder sizes its run-length read cache as (bytes of pixel data) / rows: when
+// that is less than a pixel it reads out of bounds, and when it is zero it frees the bitmap and
+// still returns it. A TGA 2.0 postage stamp (thumbnail) claiming more pixels than its space holds
+// is copied from beyond its buffer. Both mean a damaged file: run-length packets never cross rows,
+// so each row takes at least one packet, a header byte and a pixel. An uncompressed file must hold
+// all its pixels.
 bool tgaIsSafeToDecode(std::FILE* file) {
     const long size = fileSize(file);
     const auto byteAt = [file](long offset) { return readLittleEndian(file, offset, 1); };

@@ -439,10 +439,12 @@ std::vector<std::array<Color, 2>> HierarchicalRadiosity::gatherThroughClusters(
     for (std::uint32_t root : clusters_.members(clusters_.cluster(clusters_.top()))) {
         stack.push_back(root);
         while (!stack.empty()) {
-            const Element& e = mesh_.elements[stack.back()];
-            if (e.isLeaf()) leaves.push_back(stack.back());
+            const std::uint32_t index = stack.back();
             stack.pop_back();
-            if (!e.isLeaf())
+            const Element& e = mesh_.elements[index];
+            if (e.isLeaf())
+                leaves.push_back(index);
+            else
                 for (std::uint32_t c = e.firstChild; c < e.firstChild + 4; ++c)
                     stack.push_back(c);
         }
