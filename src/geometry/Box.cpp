@@ -98,7 +98,7 @@ Hit Box::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     Hit hit = Hit::atRoundedPoint(crossing.tShape, p, f.normal);
     hit.pError[f.axis] = 0;
     const float uExtent = max_[f.uAxis] - min_[f.uAxis], vExtent = max_[f.vAxis] - min_[f.vAxis];
-    hit.uv = {(p[f.uAxis] - min_[f.uAxis]) / uExtent, (p[f.vAxis] - min_[f.vAxis]) / vExtent};
+    hit.setUv({(p[f.uAxis] - min_[f.uAxis]) / uExtent, (p[f.vAxis] - min_[f.vAxis]) / vExtent});
     hit.dpdu = Vec3(0);
     hit.dpdu[f.uAxis] = uExtent;
     hit.dpdv = Vec3(0);

@@ -149,12 +149,11 @@ Hit Cone::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     // The gradient of x^2 + y^2 - (r0 + k z)^2, halved.
     const Vec3 n(normalize(x * t1 + y * t2 - (k * (baseRadius_ + k * z)) * a));
     Hit hit = Hit::atRoundedPoint(t, Vec3(p), n);
-    double phi = std::atan2(y, x);
-    if (phi < 0) phi += 2 * kPi;
-    hit.uv = {static_cast<float>(phi / (2 * kPi)), static_cast<float>(z / height_)};
-    // p = base + r(v) (cos phi t1 + sin phi t2) + v h a, phi = 2 pi u.
-    const auto cosPhi = static_cast<float>(std::cos(phi)),
-               sinPhi = static_cast<float>(std::sin(phi));
+    hit.deferUv(this, Vec3(Vec3d(x, y, z / height_)));
+    // p = base + r(v) (cos phi t1 + sin phi t2) + v h a, phi = 2 pi u (phi = 0 on the axis).
+    const double r = std::hypot(x, y);
+    const auto cosPhi = r > 0 ? static_cast<float>(x / r) : 1.0f,
+               sinPhi = r > 0 ? static_cast<float>(y / r) : 0.0f;
     hit.dpdu = (2 * kPi) * Vec3(-y * t1 + x * t2);
     hit.dpdv =
         (topRadius_ - baseRadius_) * (cosPhi * tangent_ + sinPhi * bitangent_) + height_ * axis_;
@@ -162,6 +161,12 @@ Hit Cone::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     hit.primitive = 0;
     hit.material = material();
     return hit;
+}
+
+Vec2 Cone::uvAt(const Vec3& local) const {
+    double phi = std::atan2(static_cast<double>(local.y), static_cast<double>(local.x));
+    if (phi < 0) phi += 2 * kPi;
+    return {static_cast<float>(phi / (2 * kPi)), local.z};
 }
 
 float Cone::area(std::uint32_t primitive) const {

@@ -32,6 +32,8 @@ public:
 
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
+    // From the side's point: its (x, y) in the frame of the tangent and bitangent, and its v.
+    Vec2 uvAt(const Vec3& local) const override;
     Bounds3 bounds() const override;
     // Closed, it is a solid.
     bool isSolid() const override { return !caps_.empty(); }

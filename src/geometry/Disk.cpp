@@ -71,11 +71,9 @@ Hit Disk::record(const Ray& ray, const SurfaceCrossing& crossing) const {
 
     const double r = std::sqrt(r2);
     const double x = dot(q, Vec3d(tangent_)), y = dot(q, Vec3d(bitangent_));
-    double phi = std::atan2(y, x);
-    if (phi < 0) phi += 2 * kPi;
     const Vec3 p(c + q);
     Hit hit = Hit::atRoundedPoint(t, p, normal_);
-    hit.uv = {static_cast<float>(phi / (2 * kPi)), static_cast<float>((R - r) / (R - Ri))};
+    hit.deferUv(this, Vec3(Vec3d(x, y, (R - r) / (R - Ri))));
     // p = c + r (cos phi t + sin phi b), phi = 2 pi u, r = R - (R - Ri) v; cos phi and sin phi
     // are x / r and y / r (phi = 0 at the centre).
     const auto cosPhi = r > 0 ? static_cast<float>(x / r) : 1.0f,
@@ -88,6 +86,12 @@ Hit Disk::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     hit.primitive = 0;
     hit.material = material();
     return hit;
+}
+
+Vec2 Disk::uvAt(const Vec3& local) const {
+    double phi = std::atan2(static_cast<double>(local.y), static_cast<double>(local.x));
+    if (phi < 0) phi += 2 * kPi;
+    return {static_cast<float>(phi / (2 * kPi)), local.z};
 }
 
 float Disk::area(std::uint32_t) const {

@@ -27,6 +27,8 @@ public:
 
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
+    // From the point's (x, y) in the frame of the tangent and bitangent, and its v.
+    Vec2 uvAt(const Vec3& local) const override;
     // Where the ray's whole line crosses the disk (t of either sign), as cross() would find it.
     std::optional<SurfaceCrossing> lineCrossing(const Ray& ray) const;
     const Vec3& normal() const { return normal_; }

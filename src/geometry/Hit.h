@@ -22,7 +22,6 @@ struct Hit {
     Vec3 ng;              // unit geometric normal on the shape's true side (outside / front)
     Vec3 ns;              // unit shading normal, in the same hemisphere as ng
     Vec3 dpdu, dpdv;      // how p moves with u and with v along the surface
-    Vec2 uv;              // surface coordinates, for textures
     // How uv changes from this pixel to the next one right (x) and down (y): the footprint that
     // texture filtering averages over. Zero when unknown (point sampling).
     float dudx = 0, dvdx = 0, dudy = 0, dvdy = 0;
@@ -65,6 +64,21 @@ struct Hit {
         solve(dpdy, dudy, dvdy);
     }
 
+    // The surface coordinates, for textures.
+    Vec2 uv() const;
+    void setUv(const Vec2& uv) {
+        uv_ = uv;
+        uvShape_ = nullptr;
+    }
+    // Leaves the surface coordinates to owner->uvAt(local), worked out only if uv() is asked:
+    // for shapes whose uv costs trigonometry (spheres, disks, cones), which most hits'
+    // materials never read (nothing is textured on them). `local` is whatever point of its own
+    // the shape needs; outer shapes (instances, csg) pass the record on with it untouched.
+    void deferUv(const Shape* owner, const Vec3& local) {
+        uvShape_ = owner;
+        uvLocal_ = local;
+    }
+
     // True when the ray arrived from the side ng points to.
     bool frontFace(const Ray& ray) const { return dot(ray.direction, ng) < 0; }
 
@@ -76,6 +90,11 @@ struct Hit {
         const Vec3 origin = offsetRayOrigin(p, pError, ng, target - p);
         return {origin, target - origin};
     }
+
+private:
+    Vec2 uv_;
+    const Shape* uvShape_ = nullptr;  // set when uv is deferred
+    Vec3 uvLocal_;
 };
 
 // Rays towards a point stop this short of it (as a fraction of the segment), so that a light

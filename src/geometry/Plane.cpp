@@ -47,7 +47,7 @@ Hit Plane::record(const Ray& ray, const SurfaceCrossing& at) const {
     Hit hit = Hit::atRoundedPoint(t, p, normal_);
     hit.dpdu = dpdu_;
     hit.dpdv = dpdv_;
-    hit.uv = {p[uAxis_], p[vAxis_]};
+    hit.setUv({p[uAxis_], p[vAxis_]});
     hit.shape = this;
     hit.primitive = 0;
     hit.material = material();

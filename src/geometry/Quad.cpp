@@ -45,7 +45,7 @@ Hit Quad::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     Hit hit = Hit::atRoundedPoint(t, p, normal_);
     hit.dpdu = edge1_;
     hit.dpdv = edge2_;
-    hit.uv = {crossing.b0, crossing.b1};
+    hit.setUv({crossing.b0, crossing.b1});
     hit.shape = this;
     hit.primitive = 0;
     hit.material = material();

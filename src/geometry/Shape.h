@@ -29,8 +29,8 @@ public:
     Shape& operator=(const Shape&) = delete;
 
     // The nearest intersection with 0 < t < tMax: a fresh record with every field set (t, p,
-    // pError, ng, ns, dpdu, dpdv, uv, shape, primitive, material; the uv footprint is the
-    // caller's), or nothing.
+    // pError, ng, ns, dpdu, dpdv, uv (or its deferral), shape, primitive, material; the uv
+    // footprint is the caller's), or nothing.
     std::optional<Hit> intersect(const Ray& ray, float tMax) const {
         const std::optional<SurfaceCrossing> crossing = cross(ray, tMax);
         if (!crossing) return std::nullopt;
@@ -41,6 +41,9 @@ public:
     // 0 < t < tMax, then the record of a crossing that cross(ray, ·) found.
     virtual std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const = 0;
     virtual Hit record(const Ray& ray, const SurfaceCrossing& crossing) const = 0;
+    // The uv of a record whose uv this shape deferred (Hit::deferUv), from the local point it
+    // left there. Only the shapes that defer it are asked.
+    virtual Vec2 uvAt(const Vec3&) const { return {}; }
 
     // Whether anything is hit with 0 < t < tMax: shadow rays, which need no hit record and can
     // stop at the first hit found.

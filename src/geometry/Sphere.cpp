@@ -66,12 +66,8 @@ Hit Sphere::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     const Vec3 n = Vec3(local / r);
 
     Hit hit = Hit::atRoundedPoint(t, p, n);
-    // u = phi / 2 pi and v = 1/2 + lambda / pi for the longitude phi and latitude lambda of
-    // n = (cos lambda cos phi, sin lambda, -cos lambda sin phi).
-    float phi = std::atan2(-n.z, n.x);
-    if (phi < 0) phi += 2 * kPi;
+    hit.deferUv(this, n);
     const float cosLatitude = std::sqrt(std::max(0.0f, n.x * n.x + n.z * n.z));
-    hit.uv = {phi / (2 * kPi), 0.5f + std::asin(clamp(n.y, -1.0f, 1.0f)) / kPi};
     // dp/du = 2 pi r (-cos lambda sin phi, 0, -cos lambda cos phi) = 2 pi r (n.z, 0, -n.x), and
     // dp/dv = pi r (-sin lambda cos phi, cos lambda, sin lambda sin phi): no trigonometry needed
     // but at the poles, where phi is 0.
@@ -83,6 +79,14 @@ Hit Sphere::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     hit.primitive = 0;
     hit.material = material();
     return hit;
+}
+
+// u = phi / 2 pi and v = 1/2 + lambda / pi for the longitude phi and latitude lambda of the unit
+// normal n = (cos lambda cos phi, sin lambda, -cos lambda sin phi).
+Vec2 Sphere::uvAt(const Vec3& n) const {
+    float phi = std::atan2(-n.z, n.x);
+    if (phi < 0) phi += 2 * kPi;
+    return {phi / (2 * kPi), 0.5f + std::asin(clamp(n.y, -1.0f, 1.0f)) / kPi};
 }
 
 float Sphere::area(std::uint32_t) const {

@@ -22,6 +22,8 @@ public:
 
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
+    // From the unit normal in the sphere's frame.
+    Vec2 uvAt(const Vec3& n) const override;
     Bounds3 bounds() const override;
     bool isSolid() const override { return true; }
     void crossLine(const Ray& ray, LineCrossings& crossings) const override;

@@ -240,7 +240,7 @@ Hit Torus::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     if (phi < 0) phi += kTwoPi;
     double theta = std::atan2(z, rho - R);
     if (theta < 0) theta += kTwoPi;
-    hit.uv = {static_cast<float>(phi / kTwoPi), static_cast<float>(theta / kTwoPi)};
+    hit.setUv({static_cast<float>(phi / kTwoPi), static_cast<float>(theta / kTwoPi)});
     // dp/dphi = (R + r cos theta) (-sin phi t1 + cos phi t2), dp/dtheta = r (-sin theta radial +
     // cos theta axis), times 2 pi for u and v.
     hit.dpdu = Vec3((kTwoPi * ring) * (cosPhi * bitangent_ - sinPhi * tangent_));

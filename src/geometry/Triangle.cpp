@@ -120,7 +120,7 @@ Hit Triangle::makeHit(const TriangleMesh& mesh, std::uint32_t index,
     const Vec2 uv0 = mesh.uvs.empty() ? Vec2(0, 0) : mesh.uvs[v[0]];
     const Vec2 uv1 = mesh.uvs.empty() ? Vec2(1, 0) : mesh.uvs[v[1]];
     const Vec2 uv2 = mesh.uvs.empty() ? Vec2(0, 1) : mesh.uvs[v[2]];
-    hit.uv = b0 * uv0 + b1 * uv1 + b2 * uv2;
+    hit.setUv(b0 * uv0 + b1 * uv1 + b2 * uv2);
     // dp/du and dp/dv: solve p0 - p2 = du02 dpdu + dv02 dpdv, p1 - p2 = du12 dpdu + dv12 dpdv.
     const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
     const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;

@@ -25,7 +25,7 @@ BumpMap::BumpMap(std::shared_ptr<const Texture> heights, float scale)
 
 float BumpMap::height(const Hit& hit, float u, float v) const {
     Hit shifted = hit;
-    shifted.uv = Vec2(u, v);
+    shifted.setUv(Vec2(u, v));
     return heights_->evaluate(shifted).r;
 }
 
@@ -36,7 +36,8 @@ Vec3 BumpMap::normal(const Hit& hit) const {
     const float orientation = dot(cross(hit.dpdu, hit.dpdv), n);
     if (!(orientation != 0)) return n;
     const float du = step(hit.dudx, hit.dudy), dv = step(hit.dvdx, hit.dvdy);
-    const float u = hit.uv.x, v = hit.uv.y;
+    const Vec2 uv = hit.uv();
+    const float u = uv.x, v = uv.y;
     const float dhdu = scale_ * (height(hit, u + du, v) - height(hit, u - du, v)) / (2 * du);
     const float dhdv = scale_ * (height(hit, u, v + dv) - height(hit, u, v - dv)) / (2 * dv);
     const Vec3 bumped = cross(hit.dpdu + dhdu * n, hit.dpdv + dhdv * n);

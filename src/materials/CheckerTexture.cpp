@@ -20,7 +20,8 @@ Color CheckerTexture::evaluate(const Hit& hit) const {
     const auto cell = [this](float x) {
         return static_cast<long long>(std::floor(double(x) / scale_));
     };
-    return (cell(hit.uv.x) + cell(hit.uv.y)) % 2 == 0 ? even_ : odd_;
+    const Vec2 uv = hit.uv();
+    return (cell(uv.x) + cell(uv.y)) % 2 == 0 ? even_ : odd_;
 }
 
 }  // namespace lancer

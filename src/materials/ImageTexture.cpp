@@ -10,7 +10,7 @@ ImageTexture::ImageTexture(std::shared_ptr<const MipMap> mipmap) : mipmap_(std::
 
 Color ImageTexture::evaluate(const Hit& hit) const {
     const float width = std::max(std::hypot(hit.dudx, hit.dvdx), std::hypot(hit.dudy, hit.dvdy));
-    return mipmap_->trilinear(hit.uv, width);
+    return mipmap_->trilinear(hit.uv(), width);
 }
 
 Color ImageTexture::average() const {

@@ -29,7 +29,7 @@ protected:
 
     Hit hitAt(Vec2 at, float dudx, float dvdx, float dudy, float dvdy) const {
         Hit hit;
-        hit.uv = at;
+        hit.setUv(at);
         hit.dudx = dudx;
         hit.dvdx = dvdx;
         hit.dudy = dudy;
@@ -99,7 +99,7 @@ TEST(ImageTextureLoadTest, LoadsAFileIntoAMipMap) {
     const std::shared_ptr<const ImageTexture> texture = ImageReader::readTexture(file);
     ASSERT_EQ(texture->mipmap().levelCount(), 3);
     Hit hit;
-    hit.uv = {(2 + 0.5f) / 4, 0.25f};  // texel (2, 1)
+    hit.setUv({(2 + 0.5f) / 4, 0.25f});  // texel (2, 1)
     EXPECT_EQ(texture->evaluate(hit), Color(srgbToLinear(120 / 255.0f), 0, 1));
 }
 

@@ -23,8 +23,8 @@ TEST(BoxTest, ARayFromOutsideMeetsTheFaceItEntersBy) {
     EXPECT_EQ(hit->ng, Vec3(0, 0, 1));
     EXPECT_EQ(hit->primitive, 5u);  // 2 axis + 1: the face at max z
     // On the face at max z, u follows x and v follows y, each from 0 to 1.
-    EXPECT_FLOAT_EQ(hit->uv.x, 0.75f);
-    EXPECT_FLOAT_EQ(hit->uv.y, 0.75f);
+    EXPECT_FLOAT_EQ(hit->uv().x, 0.75f);
+    EXPECT_FLOAT_EQ(hit->uv().y, 0.75f);
     EXPECT_EQ(hit->dpdu, Vec3(2, 0, 0));
     EXPECT_EQ(hit->dpdv, Vec3(0, 4, 0));
     EXPECT_EQ(hit->pError.z, 0) << "the point lies exactly on the face's plane";
@@ -41,8 +41,8 @@ TEST(BoxTest, EveryFaceHasItsOutwardNormalAndUvOrientedOutwards) {
         EXPECT_EQ(hit->primitive, face);
         EXPECT_EQ(hit->ng, outward);
         EXPECT_GT(dot(cross(hit->dpdu, hit->dpdv), outward), 0) << "face " << face;
-        EXPECT_FLOAT_EQ(hit->uv.x, 0.5f);
-        EXPECT_FLOAT_EQ(hit->uv.y, 0.5f);
+        EXPECT_FLOAT_EQ(hit->uv().x, 0.5f);
+        EXPECT_FLOAT_EQ(hit->uv().y, 0.5f);
         EXPECT_FLOAT_EQ(length(cross(hit->dpdu, hit->dpdv)), kBox.area(face));
     }
 }

@@ -14,7 +14,7 @@ const Color kEven(0.9f, 0.8f, 0.7f), kOdd(0.1f, 0.2f, 0.3f);
 
 Color at(const CheckerTexture& checker, float u, float v) {
     Hit hit;
-    hit.uv = {u, v};
+    hit.setUv({u, v});
     return checker.evaluate(hit);
 }
 

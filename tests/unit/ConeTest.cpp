@@ -28,7 +28,7 @@ TEST(ConeTest, ARayMeetsACylindersSideWhereTheCircleSays) {
     EXPECT_EQ(hit->primitive, 0u);
     EXPECT_NEAR(hit->t, 5 - 0.8f, kTolerance);
     EXPECT_VEC3_NEAR(hit->ng, Vec3(0.6f, 0, 0.8f), kTolerance);
-    EXPECT_NEAR(hit->uv.y, 0.75f, kTolerance);
+    EXPECT_NEAR(hit->uv().y, 0.75f, kTolerance);
     EXPECT_GT(dot(cross(hit->dpdu, hit->dpdv), hit->ng), 0) << "dpdu x dpdv points out";
 }
 

@@ -124,8 +124,8 @@ TEST(InstanceTest, TransformedTriangleMatchesATriangleMadeOfTransformedVertices)
         if (!hitA) continue;
         EXPECT_NEAR(a.t, b.t, 1e-5f);
         EXPECT_NEAR(dot(a.ng, b.ng), 1, 1e-5f);  // the front side is kept
-        EXPECT_NEAR(a.uv.x, b.uv.x, 1e-4f);
-        EXPECT_NEAR(a.uv.y, b.uv.y, 1e-4f);
+        EXPECT_NEAR(a.uv().x, b.uv().x, 1e-4f);
+        EXPECT_NEAR(a.uv().y, b.uv().y, 1e-4f);
     }
 }
 

@@ -143,8 +143,8 @@ TEST_P(PlaneUvTest, UvAreWorldCoordinatesOnTheAxesNearestThePlane) {
         const Vec3 origin = target + 3.0f * random.unitVector();
         Hit hit;
         if (!test::intersectInto(plane, {origin, target - origin}, kInfinity, hit)) continue;
-        EXPECT_EQ(hit.uv.x, hit.p[c.uAxis]);
-        EXPECT_EQ(hit.uv.y, hit.p[c.vAxis]);
+        EXPECT_EQ(hit.uv().x, hit.p[c.uAxis]);
+        EXPECT_EQ(hit.uv().y, hit.p[c.vAxis]);
     }
 }
 

@@ -27,8 +27,8 @@ TEST(QuadTest, HitsInsideWithUvAlongTheEdges) {
     ASSERT_TRUE(test::intersectInto(quad, {Vec3(0.5f, 0, -0.25f), Vec3(0, 1, 0)}, kInfinity, hit));
     EXPECT_NEAR(hit.t, 3, kTolerance);
     EXPECT_VEC3_NEAR(hit.p, Vec3(0.5f, 3, -0.25f), kTolerance);
-    EXPECT_NEAR(hit.uv.x, 0.75f, kTolerance);
-    EXPECT_NEAR(hit.uv.y, 0.25f, kTolerance);
+    EXPECT_NEAR(hit.uv().x, 0.75f, kTolerance);
+    EXPECT_NEAR(hit.uv().y, 0.25f, kTolerance);
     EXPECT_EQ(hit.ng, Vec3(0, -1, 0));
     EXPECT_EQ(hit.ns, Vec3(0, -1, 0));
     EXPECT_EQ(hit.dpdu, kEdge1);
@@ -69,8 +69,8 @@ TEST(QuadTest, ParallelogramEdgesNeedNotBeOrthogonal) {
     const Quad quad(corner, edge1, edge2, nullptr);
     Hit hit;
     ASSERT_TRUE(test::intersectInto(quad, {Vec3(1, 0.5f, 5), Vec3(0, 0, -1)}, kInfinity, hit));
-    EXPECT_NEAR(hit.uv.x, 0.5f, kTolerance);
-    EXPECT_NEAR(hit.uv.y, 0.5f, kTolerance);
+    EXPECT_NEAR(hit.uv().x, 0.5f, kTolerance);
+    EXPECT_NEAR(hit.uv().y, 0.5f, kTolerance);
     EXPECT_FALSE(test::intersectInto(quad, {Vec3(0.1f, 0.5f, 5), Vec3(0, 0, -1)}, kInfinity, hit));
     EXPECT_NEAR(quad.area(0), 1, kTolerance);
     EXPECT_VEC3_NEAR(quad.normal(), Vec3(0, 0, 1), kTolerance);

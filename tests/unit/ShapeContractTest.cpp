@@ -277,7 +277,7 @@ TEST_P(ShapeContract, EveryFieldOfTheRecordIsSet) {
             << "dpdu and dpdv span the surface";
         EXPECT_NEAR(dot(hit->dpdu, hit->ng), 0, 1e-3f * length(hit->dpdu));
         EXPECT_NEAR(dot(hit->dpdv, hit->ng), 0, 1e-3f * length(hit->dpdv));
-        EXPECT_TRUE(std::isfinite(hit->uv.x) && std::isfinite(hit->uv.y));
+        EXPECT_TRUE(std::isfinite(hit->uv().x) && std::isfinite(hit->uv().y));
         EXPECT_EQ(hit->shape, shape.get());
         ASSERT_LT(hit->primitive, shape->primitiveCount());
         EXPECT_EQ(hit->material, shape->primitiveMaterial(hit->primitive));
@@ -308,7 +308,7 @@ TEST_P(ShapeContract, DpduAndDpdvAreTheDerivativesOfTheUvParameterisation) {
         const Vec3 aim2 = first->p + step * (a * 0.6f + b * 0.8f);
         const auto second = shape->intersect({origin, normalize(aim2 - origin)}, kInfinity);
         if (!second || second->primitive != first->primitive) continue;
-        const Vec2 duv = second->uv - first->uv;
+        const Vec2 duv = second->uv() - first->uv();
         if (std::abs(duv.x) > 0.25f || std::abs(duv.y) > 0.25f) continue;  // across a uv seam
         const Vec3 moved = second->p - first->p;
         const Vec3 predicted = duv.x * first->dpdu + duv.y * first->dpdv;

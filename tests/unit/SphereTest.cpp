@@ -183,9 +183,10 @@ TEST(SphereTest, UvIsLongitudeAndLatitude) {
           Case{Vec3(-1, 0, 0), Vec2(0.5f, 0.5f)}, Case{Vec3(0, 0, 1), Vec2(0.75f, 0.5f)},
           Case{Vec3(0, 1, 0), Vec2(0, 1)}, Case{Vec3(0, -1, 0), Vec2(0, 0)}}) {
         const Hit hit = hitUnitSphereAt(c.n);
-        EXPECT_NEAR(hit.uv.y, c.uv.y, kTolerance) << "latitude at " << c.n.x << c.n.y << c.n.z;
+        EXPECT_NEAR(hit.uv().y, c.uv.y, kTolerance) << "latitude at " << c.n.x << c.n.y << c.n.z;
         if (std::abs(c.n.y) < 1) {  // the longitude of a pole is arbitrary
-            EXPECT_NEAR(hit.uv.x, c.uv.x, kTolerance) << "longitude at " << c.n.x << c.n.y << c.n.z;
+            EXPECT_NEAR(hit.uv().x, c.uv.x, kTolerance)
+                << "longitude at " << c.n.x << c.n.y << c.n.z;
         }
     }
 }
@@ -195,14 +196,14 @@ TEST(SphereTest, UvRecoversTheHitPoint) {
     for (int i = 0; i < 1000; ++i) {
         const Vec3 n = random.unitVector();
         const Hit hit = hitUnitSphereAt(n);
-        ASSERT_GE(hit.uv.x, 0);
-        ASSERT_LE(hit.uv.x, 1);
-        ASSERT_GE(hit.uv.y, 0);
-        ASSERT_LE(hit.uv.y, 1);
+        ASSERT_GE(hit.uv().x, 0);
+        ASSERT_LE(hit.uv().x, 1);
+        ASSERT_GE(hit.uv().y, 0);
+        ASSERT_LE(hit.uv().y, 1);
         // asin near the poles amplifies rounding: 1e-6 in n.y becomes ~1e-3 in latitude there.
-        EXPECT_VEC3_NEAR(pointAtUv(hit.uv.x, hit.uv.y), hit.p, 2e-3f);
+        EXPECT_VEC3_NEAR(pointAtUv(hit.uv().x, hit.uv().y), hit.p, 2e-3f);
         if (std::abs(n.y) < 0.9f) {
-            EXPECT_VEC3_NEAR(pointAtUv(hit.uv.x, hit.uv.y), hit.p, 1e-5f);
+            EXPECT_VEC3_NEAR(pointAtUv(hit.uv().x, hit.uv().y), hit.p, 1e-5f);
         }
     }
 }

@@ -145,7 +145,7 @@ inline ::testing::AssertionResult isUntouched(const Hit& hit) {
 
 inline ::testing::AssertionResult isFiniteHit(const Hit& hit) {
     if (std::isfinite(hit.t) && isFinite(hit.p) && isFinite(hit.pError) && isFinite(hit.ng) &&
-        isFinite(hit.ns) && std::isfinite(hit.uv.x) && std::isfinite(hit.uv.y))
+        isFinite(hit.ns) && std::isfinite(hit.uv().x) && std::isfinite(hit.uv().y))
         return ::testing::AssertionSuccess();
     return ::testing::AssertionFailure()
            << "the hit record holds a NaN or an infinity (t = " << hit.t << ")";

@@ -40,8 +40,8 @@ TEST(TorusTest, ARayInTheEquatorialPlaneMeetsTheNearestOfFourRoots) {
     ASSERT_TRUE(outer);
     EXPECT_NEAR(outer->t, 5 - 1.25f, kTolerance);
     EXPECT_VEC3_NEAR(outer->ng, Vec3(1, 0, 0), kTolerance);
-    EXPECT_NEAR(outer->uv.x, 0, kTolerance);
-    EXPECT_NEAR(outer->uv.y, 0, kTolerance) << "the outer equator";
+    EXPECT_NEAR(outer->uv().x, 0, kTolerance);
+    EXPECT_NEAR(outer->uv().y, 0, kTolerance) << "the outer equator";
     EXPECT_GT(dot(cross(outer->dpdu, outer->dpdv), outer->ng), 0) << "dpdu x dpdv points out";
     // From the hole two roots lie behind: the nearest ahead is the far side's inner rim.
     const std::optional<Hit> third =
@@ -49,8 +49,8 @@ TEST(TorusTest, ARayInTheEquatorialPlaneMeetsTheNearestOfFourRoots) {
     ASSERT_TRUE(third);
     EXPECT_NEAR(third->t, 1.25f, kTolerance);
     EXPECT_VEC3_NEAR(third->ng, Vec3(1, 0, 0), kTolerance) << "the inner rim faces the axis";
-    EXPECT_NEAR(third->uv.x, 0.5f, kTolerance);
-    EXPECT_NEAR(third->uv.y, 0.5f, kTolerance) << "the inner equator";
+    EXPECT_NEAR(third->uv().x, 0.5f, kTolerance);
+    EXPECT_NEAR(third->uv().y, 0.5f, kTolerance) << "the inner equator";
     // tMax short of the first root: nothing.
     EXPECT_FALSE(kTorus.intersect({Vec3(5, 0, 0), Vec3(-1, 0, 0)}, 3.7f));
 }
@@ -85,8 +85,8 @@ TEST(TorusTest, UvAndNormalsAtKnownPoints) {
     ASSERT_TRUE(top);
     EXPECT_NEAR(top->t, 4.75f, kTolerance);
     EXPECT_VEC3_NEAR(top->ng, Vec3(0, 1, 0), kTolerance);
-    EXPECT_NEAR(top->uv.x, 0.25f, kTolerance);
-    EXPECT_NEAR(top->uv.y, 0.25f, kTolerance);
+    EXPECT_NEAR(top->uv().x, 0.25f, kTolerance);
+    EXPECT_NEAR(top->uv().y, 0.25f, kTolerance);
     // |dp/du| = 2 pi (R + r cos theta) = 2 pi, |dp/dv| = 2 pi r.
     EXPECT_VEC3_NEAR(top->dpdu, Vec3(-2 * kPi, 0, 0), 1e-4f);
     EXPECT_VEC3_NEAR(top->dpdv, Vec3(0, 0, 2 * kPi * 0.25f), 1e-4f);
@@ -94,8 +94,8 @@ TEST(TorusTest, UvAndNormalsAtKnownPoints) {
     const std::optional<Hit> bottom = kTorus.intersect({Vec3(-1, -5, 0), Vec3(0, 1, 0)}, kInfinity);
     ASSERT_TRUE(bottom);
     EXPECT_VEC3_NEAR(bottom->ng, Vec3(0, -1, 0), kTolerance);
-    EXPECT_NEAR(bottom->uv.x, 0.5f, kTolerance);
-    EXPECT_NEAR(bottom->uv.y, 0.75f, kTolerance);
+    EXPECT_NEAR(bottom->uv().x, 0.5f, kTolerance);
+    EXPECT_NEAR(bottom->uv().y, 0.75f, kTolerance);
 }
 
 // The exact signed distance from the torus R, r about the unit axis through c, in double.
@@ -223,8 +223,8 @@ TEST(TorusTest, EveryScaleGivesTheSameAnswers) {
             if (!hit) continue;
             EXPECT_NEAR(hit->t / s, unit->t, 1e-5f * std::max(1.0f, unit->t));
             EXPECT_VEC3_NEAR(hit->ng, unit->ng, 1e-5f);
-            EXPECT_NEAR(hit->uv.x, unit->uv.x, 1e-5f);
-            EXPECT_NEAR(hit->uv.y, unit->uv.y, 1e-5f);
+            EXPECT_NEAR(hit->uv().x, unit->uv().x, 1e-5f);
+            EXPECT_NEAR(hit->uv().y, unit->uv().y, 1e-5f);
         }
     }
 }

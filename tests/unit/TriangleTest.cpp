@@ -282,8 +282,8 @@ TEST(TriangleTest, UvInterpolatesTheVertexUvs) {
         ASSERT_TRUE(
             test::intersectInto(triangle, {Vec3(b1, b2, 1), Vec3(0, 0, -1)}, kInfinity, hit));
         // The hit point (b1, b2) on this triangle has barycentrics (1 - b1 - b2, b1, b2).
-        EXPECT_NEAR(hit.uv.x, b1 + 0.5f * b2, kTolerance);
-        EXPECT_NEAR(hit.uv.y, b2, kTolerance);
+        EXPECT_NEAR(hit.uv().x, b1 + 0.5f * b2, kTolerance);
+        EXPECT_NEAR(hit.uv().y, b2, kTolerance);
     }
 }
 
@@ -295,8 +295,8 @@ TEST(TriangleTest, DefaultUvsAreTheUnitRightTriangle) {
         ASSERT_TRUE(test::intersectInto(
             triangle, {pointAt(v, b.x, b.y) + Vec3(0, 2, 0), Vec3(0, -1, 0)}, kInfinity, hit));
         // Default uvs (0,0), (1,0), (0,1): uv = (b1, b2).
-        EXPECT_NEAR(hit.uv.x, b.x, kTolerance);
-        EXPECT_NEAR(hit.uv.y, b.y, kTolerance);
+        EXPECT_NEAR(hit.uv().x, b.x, kTolerance);
+        EXPECT_NEAR(hit.uv().y, b.y, kTolerance);
     }
 }
 
