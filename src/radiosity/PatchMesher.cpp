@@ -2,9 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
+#include "geometry/ConvexPolygon.h"
+#include "geometry/Hit.h"
 #include "geometry/Shape.h"
+#include "geometry/Tessellation.h"
 #include "materials/Material.h"
+#include "math/Ray.h"
+#include "radiosity/ContactCutter.h"
 #include "radiosity/SurfaceProbe.h"
 #include "scene/Scene.h"
 
@@ -25,6 +32,21 @@ int piecesFor(float length, float size) {
     return std::clamp(static_cast<int>(std::ceil(length / size)), 1, 4096);
 }
 
+// The edges of every facet, each with the size of its shape (an infinite plane's: its clip box's).
+std::vector<ContactCutter::Edge> facetEdges(const std::vector<const Shape*>& shapes,
+                                            const std::vector<Tessellation>& tessellations,
+                                            const Bounds3& clipBox) {
+    std::vector<ContactCutter::Edge> edges;
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        const float reach =
+            length((shapes[i]->isBounded() ? shapes[i]->bounds() : clipBox).diagonal());
+        for (const Tessellation::Facet& facet : tessellations[i].facets)
+            for (int k = 0; k < 3; ++k)
+                edges.push_back({facet.corners[k], facet.corners[(k + 1) % 3], reach});
+    }
+    return edges;
+}
+
 }  // namespace
 
 PatchMesher::PatchMesher(const Scene& scene, const RadiositySettings& settings) : scene_(scene) {
@@ -36,29 +58,104 @@ PatchMesher::PatchMesher(const Scene& scene, const RadiositySettings& settings) 
     const float margin = std::max(0.05f * length(clipBox_.diagonal()), 1e-3f);
     clipBox_ = Bounds3(clipBox_.min - Vec3(margin), clipBox_.max + Vec3(margin));
     const float sceneSize = length((shapes.isEmpty() ? clipBox_ : shapes).diagonal());
+    contactTolerance_ = 1e-4f * sceneSize;
     patchSize_ = settings.patchSize > 0 ? settings.patchSize : sceneSize / 8;
     elementSize_ =
         settings.elementSize > 0 ? std::min(settings.elementSize, patchSize_) : patchSize_ / 2;
 }
 
 RadiosityMesh PatchMesher::mesh() const {
-    RadiosityMesh mesh;
+    // Every shape's facets first: their edges are where the other surfaces are cut.
+    std::vector<const Shape*> shapes;
     for (const auto& shape : scene_.boundedShapes())
-        addShape(mesh, *shape);
+        shapes.push_back(shape.get());
     for (const auto& shape : scene_.unboundedShapes())
-        addShape(mesh, *shape);
+        shapes.push_back(shape.get());
+    std::vector<Tessellation> tessellations;
+    tessellations.reserve(shapes.size());
+    for (const Shape* shape : shapes)
+        tessellations.push_back(shape->tessellate({patchSize_, clipBox_}));
+    const ContactCutter cutter(facetEdges(shapes, tessellations, clipBox_), contactTolerance_);
+    RadiosityMesh mesh;
+    for (std::size_t i = 0; i < shapes.size(); ++i)
+        addShape(mesh, *shapes[i], tessellations[i], cutter);
     return mesh;
 }
 
-void PatchMesher::addShape(RadiosityMesh& mesh, const Shape& shape) const {
-    const Tessellation tessellation = shape.tessellate({patchSize_, clipBox_});
+void PatchMesher::addShape(RadiosityMesh& mesh, const Shape& shape,
+                           const Tessellation& tessellation, const ContactCutter& cutter) const {
     for (const Tessellation::Facet& facet : tessellation.facets) {
         const Material* material = shape.primitiveMaterial(facet.primitive);
         if (!material || !isMeshed(*material)) continue;
-        addSurfaceTriangle(mesh, facet.corners,
-                           {&shape, material, shape.emitsOnBothSides(), tessellation.curved,
-                            tessellation.probeDistance});
+        const Source source{&shape, material, shape.emitsOnBothSides(), tessellation.curved,
+                            tessellation.probeDistance};
+        // Chords of a curved surface are not where anything stands: they are not cut.
+        const ContactCutter::Pieces pieces =
+            tessellation.curved ? ContactCutter::Pieces{} : cutter.cut(facet.corners);
+        if (pieces.polygons.empty()) {
+            addSurfaceTriangle(mesh, facet.corners, source);
+            continue;
+        }
+        const std::array<Vec3, 3>& c = facet.corners;
+        const Vec3 normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
+        for (const std::vector<Vec3d>& piece : pieces.polygons)
+            if (!isEnclosed(piece, normal, pieces.reach))
+                addSurfacePiece(mesh, piece, normal, source);
     }
+}
+
+void PatchMesher::addSurfacePiece(RadiosityMesh& mesh, const std::vector<Vec3d>& piece,
+                                  const Vec3& normal, const Source& source) const {
+    // Axes fixed by the plane alone, so that the pieces of neighbouring triangles share a grid.
+    Vec3 su, sv;
+    coordinateSystem(normal, su, sv);
+    const Vec3d u(su), v(sv);
+    const auto range = [&](const std::vector<Vec3d>& polygon, const Vec3d& axis) {
+        double lo = dot(axis, polygon[0]), hi = lo;
+        for (const Vec3d& p : polygon) {
+            lo = std::min(lo, dot(axis, p));
+            hi = std::max(hi, dot(axis, p));
+        }
+        return std::pair{std::floor(lo / patchSize_), hi};
+    };
+    const double size = patchSize_;
+    const auto [uFirst, uEnd] = range(piece, u);
+    for (double i = uFirst; i * size < uEnd; ++i) {
+        const std::vector<Vec3d> strip =
+            clipPolygon(clipPolygon(piece, u, i * size), -u, -(i + 1) * size);
+        if (strip.empty()) continue;
+        const auto [vFirst, vEnd] = range(strip, v);
+        for (double j = vFirst; j * size < vEnd; ++j) {
+            const std::vector<Vec3d> cell =
+                clipPolygon(clipPolygon(strip, v, j * size), -v, -(j + 1) * size);
+            // A fan: the cell's part is convex.
+            for (std::size_t k = 1; k + 1 < cell.size(); ++k)
+                addSurfaceTriangle(mesh, {Vec3(cell[0]), Vec3(cell[k]), Vec3(cell[k + 1])}, source);
+        }
+    }
+}
+
+bool PatchMesher::isEnclosed(const std::vector<Vec3d>& piece, const Vec3& normal,
+                             float reach) const {
+    Vec3d centre(0);
+    for (const Vec3d& p : piece)
+        centre += p;
+    // Above a solid's base, which lies within the tolerance of the surface.
+    const Vec3 origin =
+        Vec3(centre / static_cast<double>(piece.size())) + 2 * contactTolerance_ * normal;
+    // Along the normal and four directions 45 degrees from it: an object only leaning over the
+    // piece (a slanted panel, a table) lets some of them out.
+    Vec3 s, t;
+    coordinateSystem(normal, s, t);
+    const float tilt = std::sqrt(0.5f);
+    const std::array<Vec3, 5> directions{normal, tilt * (normal + s), tilt * (normal - s),
+                                         tilt * (normal + t), tilt * (normal - t)};
+    return std::all_of(directions.begin(), directions.end(), [&](const Vec3& direction) {
+        const Ray ray{origin, direction};
+        // Twice the cutting shape's size: a solid given as separate faces is larger than each.
+        const std::optional<Hit> hit = scene_.intersect(ray, 2 * reach);
+        return hit && !hit->frontFace(ray) && !(hit->material && hit->material->isTransmissive());
+    });
 }
 
 void PatchMesher::addSurfaceTriangle(RadiosityMesh& mesh, const std::array<Vec3, 3>& corners,
