@@ -32,19 +32,18 @@ int piecesFor(float length, float size) {
     return std::clamp(static_cast<int>(std::ceil(length / size)), 1, 4096);
 }
 
-// The edges of every facet, each with the size of its shape (an infinite plane's: its clip box's).
-std::vector<ContactCutter::Edge> facetEdges(const std::vector<const Shape*>& shapes,
+// Every facet, with the size of its shape (an infinite plane's: its clip box's).
+std::vector<ContactCutter::Facet> allFacets(const std::vector<const Shape*>& shapes,
                                             const std::vector<Tessellation>& tessellations,
                                             const Bounds3& clipBox) {
-    std::vector<ContactCutter::Edge> edges;
+    std::vector<ContactCutter::Facet> facets;
     for (std::size_t i = 0; i < shapes.size(); ++i) {
         const float reach =
             length((shapes[i]->isBounded() ? shapes[i]->bounds() : clipBox).diagonal());
         for (const Tessellation::Facet& facet : tessellations[i].facets)
-            for (int k = 0; k < 3; ++k)
-                edges.push_back({facet.corners[k], facet.corners[(k + 1) % 3], reach});
+            facets.push_back({facet.corners, reach});
     }
-    return edges;
+    return facets;
 }
 
 }  // namespace
@@ -65,7 +64,7 @@ PatchMesher::PatchMesher(const Scene& scene, const RadiositySettings& settings) 
 }
 
 RadiosityMesh PatchMesher::mesh() const {
-    // Every shape's facets first: their edges are where the other surfaces are cut.
+    // Every shape's facets first: where they meet the other surfaces, those are cut.
     std::vector<const Shape*> shapes;
     for (const auto& shape : scene_.boundedShapes())
         shapes.push_back(shape.get());
@@ -75,7 +74,7 @@ RadiosityMesh PatchMesher::mesh() const {
     tessellations.reserve(shapes.size());
     for (const Shape* shape : shapes)
         tessellations.push_back(shape->tessellate({patchSize_, clipBox_}));
-    const ContactCutter cutter(facetEdges(shapes, tessellations, clipBox_), contactTolerance_);
+    const ContactCutter cutter(allFacets(shapes, tessellations, clipBox_), contactTolerance_);
     RadiosityMesh mesh;
     for (std::size_t i = 0; i < shapes.size(); ++i)
         addShape(mesh, *shapes[i], tessellations[i], cutter);
@@ -90,49 +89,70 @@ void PatchMesher::addShape(RadiosityMesh& mesh, const Shape& shape,
         const Source source{&shape, material, shape.emitsOnBothSides(), tessellation.curved,
                             tessellation.probeDistance};
         // Chords of a curved surface are not where anything stands: they are not cut.
-        const ContactCutter::Pieces pieces =
-            tessellation.curved ? ContactCutter::Pieces{} : cutter.cut(facet.corners);
+        const std::array<Vec3, 3>& c = facet.corners;
+        const Vec3 normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
+        const std::array<Vec3d, 3> triangle{Vec3d(c[0]), Vec3d(c[1]), Vec3d(c[2])};
+        const ContactCutter::Pieces pieces = tessellation.curved || !isFinite(normal)
+                                                 ? ContactCutter::Pieces{}
+                                                 : cutter.cut(triangle, Vec3d(normal));
         if (pieces.polygons.empty()) {
             addSurfaceTriangle(mesh, facet.corners, source);
             continue;
         }
-        const std::array<Vec3, 3>& c = facet.corners;
-        const Vec3 normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
-        for (const std::vector<Vec3d>& piece : pieces.polygons)
-            if (!isEnclosed(piece, normal, pieces.reach))
-                addSurfacePiece(mesh, piece, normal, source);
+        // Cut into the cells of a grid first, then along the contact lines: a line then splits
+        // only the cells it crosses, not the whole surface (long slivers, whose elements would
+        // spread each value far beyond the element size, and many more patches).
+        for (const std::vector<Vec3d>& cell :
+             gridCells({triangle.begin(), triangle.end()}, normal)) {
+            ContactCutter::Pieces parts = cutter.cut(cell, Vec3d(normal));
+            if (parts.polygons.empty()) parts.polygons = {cell};
+            for (const std::vector<Vec3d>& part : parts.polygons) {
+                if (isEnclosed(part, normal, pieces.reach)) continue;
+                // A fan: the part is convex. Its triangles thinner than the tolerance are
+                // rounding (a cell cut through its corner), not surface.
+                for (std::size_t k = 1; k + 1 < part.size(); ++k) {
+                    const Vec3d a = part[k] - part[0], b = part[k + 1] - part[0];
+                    const double longest =
+                        std::max({length(a), length(b), length(part[k + 1] - part[k])});
+                    if (length(cross(a, b)) <= contactTolerance_ * longest) continue;
+                    addSurfaceTriangle(mesh, {Vec3(part[0]), Vec3(part[k]), Vec3(part[k + 1])},
+                                       source);
+                }
+            }
+        }
     }
 }
 
-void PatchMesher::addSurfacePiece(RadiosityMesh& mesh, const std::vector<Vec3d>& piece,
-                                  const Vec3& normal, const Source& source) const {
-    // Axes fixed by the plane alone, so that the pieces of neighbouring triangles share a grid.
+std::vector<std::vector<Vec3d>> PatchMesher::gridCells(const std::vector<Vec3d>& polygon,
+                                                       const Vec3& normal) const {
+    // Axes fixed by the plane alone, so that neighbouring triangles share a grid.
     Vec3 su, sv;
     coordinateSystem(normal, su, sv);
     const Vec3d u(su), v(sv);
-    const auto range = [&](const std::vector<Vec3d>& polygon, const Vec3d& axis) {
-        double lo = dot(axis, polygon[0]), hi = lo;
-        for (const Vec3d& p : polygon) {
+    // Square cells whose halves' longest edge is the patch size: one patch each.
+    const double size = patchSize_ * std::sqrt(0.5);
+    const auto range = [&](const std::vector<Vec3d>& part, const Vec3d& axis) {
+        double lo = dot(axis, part[0]), hi = lo;
+        for (const Vec3d& p : part) {
             lo = std::min(lo, dot(axis, p));
             hi = std::max(hi, dot(axis, p));
         }
-        return std::pair{std::floor(lo / patchSize_), hi};
+        return std::pair{std::floor(lo / size), hi};
     };
-    const double size = patchSize_;
-    const auto [uFirst, uEnd] = range(piece, u);
+    std::vector<std::vector<Vec3d>> cells;
+    const auto [uFirst, uEnd] = range(polygon, u);
     for (double i = uFirst; i * size < uEnd; ++i) {
         const std::vector<Vec3d> strip =
-            clipPolygon(clipPolygon(piece, u, i * size), -u, -(i + 1) * size);
+            clipPolygon(clipPolygon(polygon, u, i * size), -u, -(i + 1) * size);
         if (strip.empty()) continue;
         const auto [vFirst, vEnd] = range(strip, v);
         for (double j = vFirst; j * size < vEnd; ++j) {
-            const std::vector<Vec3d> cell =
+            std::vector<Vec3d> cell =
                 clipPolygon(clipPolygon(strip, v, j * size), -v, -(j + 1) * size);
-            // A fan: the cell's part is convex.
-            for (std::size_t k = 1; k + 1 < cell.size(); ++k)
-                addSurfaceTriangle(mesh, {Vec3(cell[0]), Vec3(cell[k]), Vec3(cell[k + 1])}, source);
+            if (!cell.empty()) cells.push_back(std::move(cell));
         }
     }
+    return cells;
 }
 
 bool PatchMesher::isEnclosed(const std::vector<Vec3d>& piece, const Vec3& normal,

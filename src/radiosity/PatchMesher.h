@@ -45,11 +45,10 @@ private:
 
     void addShape(RadiosityMesh& mesh, const Shape& shape, const Tessellation& tessellation,
                   const ContactCutter& cutter) const;
-    // Meshes a convex piece of a surface triangle cut along contact lines: cut by a square grid
-    // of the patch size first, as a piece can be a long sliver, whose elements would spread each
-    // value far beyond the element size.
-    void addSurfacePiece(RadiosityMesh& mesh, const std::vector<Vec3d>& piece, const Vec3& normal,
-                         const Source& source) const;
+    // The parts of a convex polygon in the cells of a square grid in its plane, each cell a pair of
+    // patches.
+    std::vector<std::vector<Vec3d>> gridCells(const std::vector<Vec3d>& polygon,
+                                              const Vec3& normal) const;
     // Whether a piece of a surface is enclosed by a solid standing on it: rays from its centre
     // over its front hemisphere all meet, within about `reach`, the back of an opaque surface
     // first.

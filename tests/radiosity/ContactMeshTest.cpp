@@ -124,19 +124,34 @@ TEST(ContactMeshTest, SurfacesWithoutContactsAreMeshedAsBefore) {
     }
 }
 
-TEST(ContactMeshTest, EdgesAlongATrianglesSidesOrOffItsPlaneDoNotCutIt) {
+// A right triangle of the plane y = 0, facing +y, as the cutter takes it.
+const std::vector<Vec3d> kTriangle{Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(0, 0, -1)};
+const Vec3d kUp(0, 1, 0);
+
+TEST(ContactMeshTest, FacetsTouchingATrianglesSidesOrOffItsPlaneDoNotCutIt) {
     const std::array<Vec3, 3> triangle{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 0, -1)};
-    const ContactCutter cutter({{Vec3(0, 0, 0), Vec3(1, 0, 0), 1},        // its side
-                                {Vec3(0.5f, 0, 0), Vec3(0.5f, 0, 1), 1},  // outside, touching
-                                {Vec3(0.2f, 0.01f, -0.1f), Vec3(0.2f, 0.01f, -0.5f), 1}},  // above
-                               1e-4f);
-    EXPECT_TRUE(cutter.cut(triangle).polygons.empty());
-    // An edge crossing it, ending inside: the line through it cuts the whole triangle in two.
-    const ContactCutter crossing({{Vec3(0.2f, 0, 0.5f), Vec3(0.2f, 0, -0.3f), 2}}, 1e-4f);
-    const ContactCutter::Pieces pieces = crossing.cut(triangle);
-    ASSERT_EQ(pieces.polygons.size(), 2u);
-    EXPECT_EQ(pieces.reach, 2);
-    EXPECT_NEAR(area(pieces.polygons[0]) + area(pieces.polygons[1]), 0.5, 1e-7);
+    const ContactCutter cutter(
+        {{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.5f, 1, 0)}, 1},           // on its side
+         {{Vec3(0.5f, 0, 0), Vec3(0.5f, 0, 1), Vec3(0.5f, 1, 0.5f)}, 1},  // outside, touching
+         {{Vec3(0.2f, 0.01f, -0.1f), Vec3(0.2f, 0.01f, -0.5f), Vec3(0.2f, 1, -0.3f)}, 1},  // above
+         {triangle, 1}},                                                                   // itself
+        1e-4f);
+    EXPECT_TRUE(cutter.cut(kTriangle, kUp).polygons.empty());
+}
+
+TEST(ContactMeshTest, AFacetStandingOnATriangleOrSunkInItCutsItAlongTheLine) {
+    // Standing on it along x = 0.2 from z = 0.5 to -0.3, or sunk through it along x = 0.3: the
+    // line cuts the whole triangle in two.
+    for (const std::array<Vec3, 3>& facet :
+         {std::array<Vec3, 3>{Vec3(0.2f, 0, 0.5f), Vec3(0.2f, 0, -0.3f), Vec3(0.2f, 1, 0)},
+          std::array<Vec3, 3>{Vec3(0.3f, -0.05f, 0.5f), Vec3(0.3f, -0.05f, -0.3f),
+                              Vec3(0.3f, 1, 0)}}) {
+        const ContactCutter cutter({{facet, 2}}, 1e-4f);
+        const ContactCutter::Pieces pieces = cutter.cut(kTriangle, kUp);
+        ASSERT_EQ(pieces.polygons.size(), 2u);
+        EXPECT_EQ(pieces.reach, 2);
+        EXPECT_NEAR(area(pieces.polygons[0]) + area(pieces.polygons[1]), 0.5, 1e-7);
+    }
 }
 
 TEST(ContactMeshTest, IrradianceAtTheFootOfABlockMatchesTracedRays) {
