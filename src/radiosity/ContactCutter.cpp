@@ -13,7 +13,7 @@ namespace {
 
 // At most this many cells along an axis: a facet as large as the scene (a clipped plane's) is
 // filed in at most this cubed cells.
-constexpr int kMaxResolution = 64;
+constexpr int kMaxResolution = 128;
 
 // Whether the segment ab reaches more than `tolerance` into the convex polygon (counter-clockwise
 // about n), clipped to the polygon shrunk by `tolerance` (Liang-Barsky): an edge running along
@@ -119,9 +119,9 @@ ContactCutter::ContactCutter(std::vector<Facet> facets, float tolerance)
             gridBox_ = merge(gridBox_, p);
     if (facets_.empty()) return;
     gridBox_ = Bounds3(gridBox_.min - Vec3(tolerance_), gridBox_.max + Vec3(tolerance_));
-    // About one facet per cell.
-    const int side = std::clamp(static_cast<int>(std::cbrt(static_cast<double>(facets_.size()))), 1,
-                                kMaxResolution);
+    // About one facet per 8 cells: a model's facets fill a small part of the room's box.
+    const int side = std::clamp(
+        static_cast<int>(2 * std::cbrt(static_cast<double>(facets_.size()))), 1, kMaxResolution);
     for (int i = 0; i < 3; ++i) {
         resolution_[i] = side;
         cellsPerUnit_[i] = static_cast<float>(side) / std::max(gridBox_.diagonal()[i], 1e-30f);
