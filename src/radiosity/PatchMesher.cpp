@@ -88,10 +88,10 @@ void PatchMesher::addShape(RadiosityMesh& mesh, const Shape& shape,
         if (!material || !isMeshed(*material)) continue;
         const Source source{&shape, material, shape.emitsOnBothSides(), tessellation.curved,
                             tessellation.probeDistance};
-        // Chords of a curved surface are not where anything stands: they are not cut.
         const std::array<Vec3, 3>& c = facet.corners;
         const Vec3 normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
         const std::array<Vec3d, 3> triangle{Vec3d(c[0]), Vec3d(c[1]), Vec3d(c[2])};
+        // Chords of a curved surface are not where anything stands: they are not cut.
         const ContactCutter::Pieces pieces = tessellation.curved || !isFinite(normal)
                                                  ? ContactCutter::Pieces{}
                                                  : cutter.cut(triangle, Vec3d(normal));

@@ -61,7 +61,8 @@ private:
     float patchSize_;
     float elementSize_;
     Bounds3 clipBox_;  // where infinite shapes are cut
-    // How far from a surface's plane an edge may lie and still cut it (relative to the scene).
+    // How far from a surface's plane another facet's corner may lie and count as in it (a ten
+    // thousandth of the scene's size).
     float contactTolerance_;
 };
 
