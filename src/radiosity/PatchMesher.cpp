@@ -2,9 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
+#include <utility>
 
+#include "geometry/ConvexPolygon.h"
+#include "geometry/Hit.h"
 #include "geometry/Shape.h"
+#include "geometry/Tessellation.h"
 #include "materials/Material.h"
+#include "math/Ray.h"
+#include "radiosity/ContactCutter.h"
 #include "radiosity/SurfaceProbe.h"
 #include "scene/Scene.h"
 
@@ -25,6 +32,20 @@ int piecesFor(float length, float size) {
     return std::clamp(static_cast<int>(std::ceil(length / size)), 1, 4096);
 }
 
+// Every facet, with the size of its shape (an infinite plane's: its clip box's).
+std::vector<ContactCutter::Facet> allFacets(const std::vector<const Shape*>& shapes,
+                                            const std::vector<Tessellation>& tessellations,
+                                            const Bounds3& clipBox) {
+    std::vector<ContactCutter::Facet> facets;
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        const float reach =
+            length((shapes[i]->isBounded() ? shapes[i]->bounds() : clipBox).diagonal());
+        for (const Tessellation::Facet& facet : tessellations[i].facets)
+            facets.push_back({facet.corners, reach});
+    }
+    return facets;
+}
+
 }  // namespace
 
 PatchMesher::PatchMesher(const Scene& scene, const RadiositySettings& settings) : scene_(scene) {
@@ -36,29 +57,125 @@ PatchMesher::PatchMesher(const Scene& scene, const RadiositySettings& settings) 
     const float margin = std::max(0.05f * length(clipBox_.diagonal()), 1e-3f);
     clipBox_ = Bounds3(clipBox_.min - Vec3(margin), clipBox_.max + Vec3(margin));
     const float sceneSize = length((shapes.isEmpty() ? clipBox_ : shapes).diagonal());
+    contactTolerance_ = 1e-4f * sceneSize;
     patchSize_ = settings.patchSize > 0 ? settings.patchSize : sceneSize / 8;
     elementSize_ =
         settings.elementSize > 0 ? std::min(settings.elementSize, patchSize_) : patchSize_ / 2;
 }
 
 RadiosityMesh PatchMesher::mesh() const {
-    RadiosityMesh mesh;
+    // Every shape's facets first: where they meet the other surfaces, those are cut.
+    std::vector<const Shape*> shapes;
     for (const auto& shape : scene_.boundedShapes())
-        addShape(mesh, *shape);
+        shapes.push_back(shape.get());
     for (const auto& shape : scene_.unboundedShapes())
-        addShape(mesh, *shape);
+        shapes.push_back(shape.get());
+    std::vector<Tessellation> tessellations;
+    tessellations.reserve(shapes.size());
+    for (const Shape* shape : shapes)
+        tessellations.push_back(shape->tessellate({patchSize_, clipBox_}));
+    const ContactCutter cutter(allFacets(shapes, tessellations, clipBox_), contactTolerance_);
+    RadiosityMesh mesh;
+    for (std::size_t i = 0; i < shapes.size(); ++i)
+        addShape(mesh, *shapes[i], tessellations[i], cutter);
     return mesh;
 }
 
-void PatchMesher::addShape(RadiosityMesh& mesh, const Shape& shape) const {
-    const Tessellation tessellation = shape.tessellate({patchSize_, clipBox_});
+void PatchMesher::addShape(RadiosityMesh& mesh, const Shape& shape,
+                           const Tessellation& tessellation, const ContactCutter& cutter) const {
     for (const Tessellation::Facet& facet : tessellation.facets) {
         const Material* material = shape.primitiveMaterial(facet.primitive);
         if (!material || !isMeshed(*material)) continue;
-        addSurfaceTriangle(mesh, facet.corners,
-                           {&shape, material, shape.emitsOnBothSides(), tessellation.curved,
-                            tessellation.probeDistance});
+        const Source source{&shape, material, shape.emitsOnBothSides(), tessellation.curved,
+                            tessellation.probeDistance};
+        const std::array<Vec3, 3>& c = facet.corners;
+        const Vec3 normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
+        const std::array<Vec3d, 3> triangle{Vec3d(c[0]), Vec3d(c[1]), Vec3d(c[2])};
+        // Chords of a curved surface are not where anything stands: they are not cut.
+        const ContactCutter::Pieces pieces = tessellation.curved || !isFinite(normal)
+                                                 ? ContactCutter::Pieces{}
+                                                 : cutter.cut(triangle, Vec3d(normal));
+        if (pieces.polygons.empty()) {
+            addSurfaceTriangle(mesh, facet.corners, source);
+            continue;
+        }
+        // Cut into the cells of a grid first, then along the contact lines: a line then splits
+        // only the cells it crosses, not the whole surface (long slivers, whose elements would
+        // spread each value far beyond the element size, and many more patches).
+        for (const std::vector<Vec3d>& cell :
+             gridCells({triangle.begin(), triangle.end()}, normal)) {
+            ContactCutter::Pieces parts = cutter.cut(cell, Vec3d(normal));
+            if (parts.polygons.empty()) parts.polygons = {cell};
+            for (const std::vector<Vec3d>& part : parts.polygons) {
+                if (isEnclosed(part, normal, pieces.reach)) continue;
+                // A fan: the part is convex. Its triangles thinner than the tolerance are
+                // rounding (a cell cut through its corner), not surface.
+                for (std::size_t k = 1; k + 1 < part.size(); ++k) {
+                    const Vec3d a = part[k] - part[0], b = part[k + 1] - part[0];
+                    const double longest =
+                        std::max({length(a), length(b), length(part[k + 1] - part[k])});
+                    if (length(cross(a, b)) <= contactTolerance_ * longest) continue;
+                    addSurfaceTriangle(mesh, {Vec3(part[0]), Vec3(part[k]), Vec3(part[k + 1])},
+                                       source);
+                }
+            }
+        }
     }
+}
+
+std::vector<std::vector<Vec3d>> PatchMesher::gridCells(const std::vector<Vec3d>& polygon,
+                                                       const Vec3& normal) const {
+    // Axes fixed by the plane alone, so that neighbouring triangles share a grid.
+    Vec3 su, sv;
+    coordinateSystem(normal, su, sv);
+    const Vec3d u(su), v(sv);
+    // Square cells whose halves' longest edge is the patch size: one patch each.
+    const double size = patchSize_ * std::sqrt(0.5);
+    const auto range = [&](const std::vector<Vec3d>& part, const Vec3d& axis) {
+        double lo = dot(axis, part[0]), hi = lo;
+        for (const Vec3d& p : part) {
+            lo = std::min(lo, dot(axis, p));
+            hi = std::max(hi, dot(axis, p));
+        }
+        return std::pair{std::floor(lo / size), hi};
+    };
+    std::vector<std::vector<Vec3d>> cells;
+    const auto [uFirst, uEnd] = range(polygon, u);
+    for (double i = uFirst; i * size < uEnd; ++i) {
+        const std::vector<Vec3d> strip =
+            clipPolygon(clipPolygon(polygon, u, i * size), -u, -(i + 1) * size);
+        if (strip.empty()) continue;
+        const auto [vFirst, vEnd] = range(strip, v);
+        for (double j = vFirst; j * size < vEnd; ++j) {
+            std::vector<Vec3d> cell =
+                clipPolygon(clipPolygon(strip, v, j * size), -v, -(j + 1) * size);
+            if (!cell.empty()) cells.push_back(std::move(cell));
+        }
+    }
+    return cells;
+}
+
+bool PatchMesher::isEnclosed(const std::vector<Vec3d>& piece, const Vec3& normal,
+                             float reach) const {
+    Vec3d centre(0);
+    for (const Vec3d& p : piece)
+        centre += p;
+    // Above a solid's base, which lies within the tolerance of the surface.
+    const Vec3 origin =
+        Vec3(centre / static_cast<double>(piece.size())) + 2 * contactTolerance_ * normal;
+    // Along the normal and four directions 45 degrees from it: an object only leaning over the
+    // piece (a slanted panel, a table) lets some of them out.
+    Vec3 s, t;
+    coordinateSystem(normal, s, t);
+    const float tilt = std::sqrt(0.5f);
+    const std::array<Vec3, 5> directions{normal, tilt * (normal + s), tilt * (normal - s),
+                                         tilt * (normal + t), tilt * (normal - t)};
+    return std::all_of(directions.begin(), directions.end(), [&](const Vec3& direction) {
+        const Ray ray{origin, direction};
+        // Twice the cutting shape's size: a solid given as separate faces is larger than each.
+        const std::optional<Hit> hit = scene_.intersect(ray, 2 * reach);
+        return hit && !hit->frontFace(ray) && !(hit->material && hit->material->isTransmissive());
+    });
 }
 
 void PatchMesher::addSurfaceTriangle(RadiosityMesh& mesh, const std::array<Vec3, 3>& corners,

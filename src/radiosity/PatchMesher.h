@@ -1,6 +1,7 @@
 #pragma once
 
 #include <array>
+#include <vector>
 
 #include "math/Bounds3.h"
 #include "radiosity/RadiosityMesh.h"
@@ -8,16 +9,21 @@
 
 namespace lancer {
 
+class ContactCutter;
 class Material;
 class Scene;
 class Shape;
+struct Tessellation;
 
 // Cuts every diffuse or emissive surface of a scene into patches no longer than the patch size,
 // and each patch into elements no longer than the element size, from the facets each shape
 // tessellates itself into (in world space; a sphere's are chords, probed onto the true sphere;
 // infinite planes are clipped to the box of the bounded shapes and the camera, enlarged a little).
 // Surfaces that reflect no diffuse light and emit none (mirrors, clear glass, area lights' own
-// surfaces) are not meshed: they only block or transmit the form factors' rays.
+// surfaces) are not meshed: they only block or transmit the form factors' rays. Flat surfaces are
+// first cut along the contact lines of the objects standing on them (ContactCutter), and the
+// pieces inside those objects are left out, so that no element straddles a contact line or lies
+// where no light reaches.
 class PatchMesher {
 public:
     PatchMesher(const Scene& scene, const RadiositySettings& settings);
@@ -37,7 +43,16 @@ private:
         float probeDistance;
     };
 
-    void addShape(RadiosityMesh& mesh, const Shape& shape) const;
+    void addShape(RadiosityMesh& mesh, const Shape& shape, const Tessellation& tessellation,
+                  const ContactCutter& cutter) const;
+    // The parts of a convex polygon in the cells of a square grid in its plane, each cell a pair of
+    // patches.
+    std::vector<std::vector<Vec3d>> gridCells(const std::vector<Vec3d>& polygon,
+                                              const Vec3& normal) const;
+    // Whether a piece of a surface is enclosed by a solid standing on it: rays from its centre
+    // over its front hemisphere all meet, within about `reach`, the back of an opaque surface
+    // first.
+    bool isEnclosed(const std::vector<Vec3d>& piece, const Vec3& normal, float reach) const;
     // Cuts a surface triangle into patches, and those into elements.
     void addSurfaceTriangle(RadiosityMesh& mesh, const std::array<Vec3, 3>& corners,
                             const Source& source) const;
@@ -46,6 +61,9 @@ private:
     float patchSize_;
     float elementSize_;
     Bounds3 clipBox_;  // where infinite shapes are cut
+    // How far from a surface's plane another facet's corner may lie and count as in it (a ten
+    // thousandth of the scene's size).
+    float contactTolerance_;
 };
 
 }  // namespace lancer

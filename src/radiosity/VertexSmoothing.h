@@ -32,7 +32,8 @@ public:
     // Where to gather a vertex's irradiance: a copy of the brightest leaf around it (so that a
     // corner on a contact line takes the visible side's value), moved 2% of the way from the
     // vertex to the leaf's centroid (inside the leaf, not on its edge), or from halfway to
-    // another surface the vertex lies beyond (a box's edge sunk into the floor). The copy's
+    // another surface the vertex lies beyond (a box's edge sunk into the floor), or from a tenth
+    // of the way in when a surface meets the vertex itself (a contact line). The copy's
     // surface point is on the shape's true surface. `rayCount` grows by the rays traced.
     Element gatherSite(const Scene& scene, std::size_t vertex, std::uint64_t& rayCount) const;
     // The leaf a vertex is gathered on (see gatherSite).
