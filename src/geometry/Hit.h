@@ -73,7 +73,8 @@ struct Hit {
     // Leaves the surface coordinates to owner->uvAt(local), worked out only if uv() is asked:
     // for shapes whose uv costs trigonometry (spheres, disks, cones), which most hits'
     // materials never read (nothing is textured on them). `local` is whatever point of its own
-    // the shape needs; outer shapes (instances, csg) pass the record on with it untouched.
+    // the shape needs; outer shapes (instances, csg) pass the record on with it untouched. Like
+    // `shape` and `material`, it needs the shape to outlive the record.
     void deferUv(const Shape* owner, const Vec3& local) {
         uvShape_ = owner;
         uvLocal_ = local;

@@ -87,9 +87,10 @@ TEST(SphereTest, RespectsTMax) {
 }
 
 // A ray along +x at height y past the sphere of radius 0.5 centred at (3, -2, 5): tangent to it
-// at y = -1.5 and y = -2.5, through it in between.
+// at y = -1.5 and y = -2.5, through it in between. The sphere outlives the record, whose uv
+// it works out on demand.
 bool intersectAtHeight(float y, Hit& hit) {
-    const Sphere sphere(Vec3(3, -2, 5), 0.5f, nullptr);
+    static const Sphere sphere(Vec3(3, -2, 5), 0.5f, nullptr);
     return test::intersectInto(sphere, {Vec3(-7, y, 5), Vec3(1, 0, 0)}, kInfinity, hit);
 }
 
