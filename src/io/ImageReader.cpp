@@ -179,6 +179,32 @@ bool tgaIsSafeToDecode(std::FILE* file) {
     return stamp + 2 + stampBytes <= footer;
 }
 
+// FreeImage's ICO decoder trusts the icon directory: a 46-byte file claiming 8387 icons, the
+// first at offset 0, had it take 6 GB and 39 s (fuzz_image). Checks that the directory and every
+// icon's data lie within the file, and that a bitmap icon's pixels (its XOR mask: rows padded to
+// 4 bytes, half the declared height, the other half being the AND mask) fit in its data.
+bool icoFitsInFile(std::FILE* file) {
+    const long size = fileSize(file);
+    const long count = readLittleEndian(file, 4, 2);
+    const long directoryEnd = 6 + 16 * count;
+    if (count == 0 || directoryEnd > size) return false;
+    for (long entry = 6; entry < directoryEnd; entry += 16) {
+        const long bytes = readLittleEndian(file, entry + 8, 4);
+        const long offset = readLittleEndian(file, entry + 12, 4);
+        if (bytes < 8 || offset < directoryEnd || offset > size - bytes) return false;
+        if (readLittleEndian(file, offset, 4) == 0x474e5089) continue;  // a PNG: libpng checks it
+        const long headerSize = readLittleEndian(file, offset, 4);
+        const double width = static_cast<std::int32_t>(readLittleEndian(file, offset + 4, 4));
+        const double height = static_cast<std::int32_t>(readLittleEndian(file, offset + 8, 4));
+        const double bitsPerPixel = readLittleEndian(file, offset + 14, 2);
+        const double rowBytes = std::ceil(width * bitsPerPixel / 32) * 4;
+        if (headerSize < 40 || headerSize > bytes || !(width > 0) || !(height > 0) ||
+            rowBytes * std::floor(height / 2) > static_cast<double>(bytes - headerSize))
+            return false;
+    }
+    return true;
+}
+
 // FreeImage's BMP decoder reads the rows of an uncompressed file past its end as zeros, and
 // succeeds: a truncated file would render as a picture with black rows. Checks that the rows the
 // header declares (each padded to 4 bytes) fit between the pixel data's offset and the end.
@@ -273,6 +299,8 @@ std::string damageFreeImageMisses(std::FILE* file, FREE_IMAGE_FORMAT format) {
         return "its header's image type, pixel depth or colour map is not one TGA defines";
     if (format == FIF_TARGA && !tgaIsSafeToDecode(file))
         return "its pixel data or thumbnail is cut short";
+    if (format == FIF_ICO && !icoFitsInFile(file))
+        return "its icon directory, or an icon's pixels, run past the end of the file";
     if (format == FIF_BMP && !bmpPixelsFitInFile(file))
         return "its pixel data ends before the rows its header declares";
     const bool pnm = format == FIF_PBM || format == FIF_PBMRAW || format == FIF_PGM ||
