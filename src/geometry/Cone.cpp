@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "geometry/FlatRings.h"
+#include "geometry/RevolutionUv.h"
 
 namespace lancer {
 
@@ -164,9 +165,7 @@ Hit Cone::record(const Ray& ray, const SurfaceCrossing& crossing) const {
 }
 
 Vec2 Cone::uvAt(const Vec3& local) const {
-    double phi = std::atan2(static_cast<double>(local.y), static_cast<double>(local.x));
-    if (phi < 0) phi += 2 * kPi;
-    return {static_cast<float>(phi / (2 * kPi)), local.z};
+    return revolutionUv(local);
 }
 
 float Cone::area(std::uint32_t primitive) const {

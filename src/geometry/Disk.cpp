@@ -5,6 +5,7 @@
 
 #include "geometry/FlatRings.h"
 #include "geometry/PlaneCrossing.h"
+#include "geometry/RevolutionUv.h"
 
 namespace lancer {
 
@@ -89,9 +90,7 @@ Hit Disk::record(const Ray& ray, const SurfaceCrossing& crossing) const {
 }
 
 Vec2 Disk::uvAt(const Vec3& local) const {
-    double phi = std::atan2(static_cast<double>(local.y), static_cast<double>(local.x));
-    if (phi < 0) phi += 2 * kPi;
-    return {static_cast<float>(phi / (2 * kPi)), local.z};
+    return revolutionUv(local);
 }
 
 float Disk::area(std::uint32_t) const {
