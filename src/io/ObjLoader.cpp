@@ -57,7 +57,7 @@ public:
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* materialIds, std::string* mtlWarnings,
                     std::string* mtlErrors) override {
-        named_ = true;
+        tried_.push_back(name);
         const fs::path path = resolvePath(objFolder_, name);
         try {
             InputFile::check(path, "an MTL file", "MTL files", InputFile::kMaxModelBytes);
@@ -78,14 +78,15 @@ public:
         return true;
     }
 
-    bool anyNamed() const { return named_; }
+    bool anyNamed() const { return !tried_.empty(); }
+    const std::vector<std::string>& namesTried() const { return tried_; }
     const std::vector<fs::path>& missingFiles() const { return missing_; }
     const fs::path& fileOf(std::size_t material) const { return files_[material]; }
     const std::vector<fs::path>& filesRead() const { return read_; }
 
 private:
     fs::path objFolder_;
-    bool named_ = false;
+    std::vector<std::string> tried_;
     std::vector<fs::path> missing_;
     std::vector<fs::path> files_;  // per material
     std::vector<fs::path> read_;
@@ -215,13 +216,12 @@ struct CornerKeyHash {
 
 class MeshBuilder {
 public:
-    MeshBuilder(const ObjContents& obj, const ObjLoader::TextureLoader& loadTexture,
-                std::vector<std::string>& warnings)
+    MeshBuilder(const ObjContents& obj, std::vector<int>& materialSources)
         : obj_(obj),
           positionCount_(obj.attrib.vertices.size() / 3),
           normalCount_(obj.attrib.normals.size() / 3),
           uvCount_(obj.attrib.texcoords.size() / 2),
-          materials_(loadTexture, warnings),
+          materialSources_(materialSources),
           mesh_(std::make_shared<TriangleMesh>()),
           firstVertexAt_(positionCount_, kNoVertex) {}
 
@@ -340,25 +340,20 @@ private:
         return std::uint32_t(mesh_->positions.size() - 1);
     }
 
-    // Materials are converted when a face first uses them, so that unused ones load no texture.
+    // The mesh's materials are the OBJ's that faces use, in the order they are first used, so
+    // that unused ones load no texture.
     std::uint32_t materialSlot(int material) {
         const bool defined = material >= 0 && std::size_t(material) < obj_.materials.size();
         const auto [slot, isNew] = slots_.try_emplace(defined ? material : -1, 0);
         if (!isNew) return slot->second;
-        slot->second = std::uint32_t(mesh_->materials.size());
-        if (!defined) {
-            mesh_->materials.push_back(std::make_shared<BlinnPhongMaterial>());
-        } else {
-            const std::size_t index = std::size_t(material);
-            mesh_->materials.push_back(
-                materials_.convert(obj_.materials[index], obj_.libraries.fileOf(index)));
-        }
+        slot->second = std::uint32_t(materialSources_.size());
+        materialSources_.push_back(defined ? material : -1);
         return slot->second;
     }
 
     const ObjContents& obj_;
     const std::size_t positionCount_, normalCount_, uvCount_;
-    MtlMaterialConverter materials_;
+    std::vector<int>& materialSources_;
     std::shared_ptr<TriangleMesh> mesh_;
     static constexpr std::uint32_t kNoVertex = ~std::uint32_t{0};
     std::vector<std::uint32_t> firstVertexAt_;  // per position: its first vertex, or kNoVertex
@@ -376,27 +371,23 @@ private:
 
 }  // namespace
 
-std::shared_ptr<TriangleMesh> ObjLoader::load(const fs::path& objPath,
-                                              const TextureLoader& loadTexture,
-                                              std::vector<std::string>& warnings,
-                                              std::vector<fs::path>* materialFiles) {
+ObjLoader::Geometry ObjLoader::readGeometry(const fs::path& objPath) {
     std::ifstream file = openObj(objPath);
     ObjContents obj = parseObj(file, objPath, /*triangulate=*/false);
+    ObjCompletion completion;
     if (hasTruncatedFaceSizes(obj.shapes)) {
         file.clear();
         file.seekg(0);
         obj = parseObj(file, objPath, /*triangulate=*/true);
-        warn(warnings, objPath,
+        warn(completion.warningsBeforeMaterials, objPath,
              "a face has more than 255 vertices, which tinyobjloader cannot pass on whole: the "
              "file was triangulated by tinyobjloader, which gets concave faces wrong");
     }
     const ParserFindings findings = readParserWarnings(obj.parserWarnings);
-    reportMaterialProblems(obj, findings, objPath, warnings);
-    if (materialFiles)
-        materialFiles->insert(materialFiles->end(), obj.libraries.filesRead().begin(),
-                              obj.libraries.filesRead().end());
+    reportMaterialProblems(obj, findings, objPath, completion.warningsBeforeMaterials);
+    completion.libraryNames = obj.libraries.namesTried();
 
-    MeshBuilder builder(obj, loadTexture, warnings);
+    MeshBuilder builder(obj, completion.materialSources);
     builder.addShortFaces(findings.shortFaces);
     for (const tinyobj::shape_t& shape : obj.shapes) {
         const tinyobj::mesh_t& faces = shape.mesh;
@@ -409,7 +400,58 @@ std::shared_ptr<TriangleMesh> ObjLoader::load(const fs::path& objPath,
         if (!shape.lines.indices.empty() || !shape.points.indices.empty())
             builder.addPointsOrLines();
     }
-    return builder.finish(objPath, warnings);
+    std::shared_ptr<TriangleMesh> triangles =
+        builder.finish(objPath, completion.warningsAfterMaterials);
+    return {std::move(triangles), std::move(completion)};
+}
+
+std::vector<std::shared_ptr<const Material>> ObjLoader::complete(
+    const fs::path& objPath, const ObjCompletion& completion, const TextureLoader& loadTexture,
+    std::vector<std::string>& warnings, std::vector<fs::path>* materialFiles) {
+    warnings.insert(warnings.end(), completion.warningsBeforeMaterials.begin(),
+                    completion.warningsBeforeMaterials.end());
+    // The libraries are read again as tinyobjloader read them, which gives the same materials
+    // in the same order (the model cache checks that the files have not changed).
+    MaterialLibraries libraries(objPath.parent_path());
+    std::vector<tinyobj::material_t> defined;
+    std::map<std::string, int> ids;
+    for (const std::string& name : completion.libraryNames) {
+        std::string mtlWarnings, mtlErrors;
+        libraries(name, &defined, &ids, &mtlWarnings, &mtlErrors);
+    }
+    if (materialFiles)
+        materialFiles->insert(materialFiles->end(), libraries.filesRead().begin(),
+                              libraries.filesRead().end());
+    MtlMaterialConverter converter(loadTexture, warnings);
+    std::vector<std::shared_ptr<const Material>> materials;
+    for (const int source : completion.materialSources) {
+        if (source < 0 || std::size_t(source) >= defined.size())
+            materials.push_back(std::make_shared<BlinnPhongMaterial>());
+        else
+            materials.push_back(converter.convert(defined[std::size_t(source)],
+                                                  libraries.fileOf(std::size_t(source))));
+    }
+    warnings.insert(warnings.end(), completion.warningsAfterMaterials.begin(),
+                    completion.warningsAfterMaterials.end());
+    return materials;
+}
+
+std::vector<fs::path> ObjLoader::libraryPaths(const fs::path& objPath,
+                                              const ObjCompletion& completion) {
+    std::vector<fs::path> paths;
+    for (const std::string& name : completion.libraryNames)
+        paths.push_back(resolvePath(objPath.parent_path(), name));
+    return paths;
+}
+
+std::shared_ptr<TriangleMesh> ObjLoader::load(const fs::path& objPath,
+                                              const TextureLoader& loadTexture,
+                                              std::vector<std::string>& warnings,
+                                              std::vector<fs::path>* materialFiles) {
+    Geometry geometry = readGeometry(objPath);
+    geometry.triangles->materials =
+        complete(objPath, geometry.completion, loadTexture, warnings, materialFiles);
+    return geometry.triangles;
 }
 
 }  // namespace lancer

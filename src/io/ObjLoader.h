@@ -8,9 +8,11 @@
 
 #include "geometry/TriangleMesh.h"
 #include "io/ImageReader.h"
+#include "io/ObjCompletion.h"
 
 namespace lancer {
 
+class Material;
 class Texture;
 
 // Reads a Wavefront OBJ model and the MTL materials it names into one triangle mesh.
@@ -29,6 +31,24 @@ public:
         const std::filesystem::path& objPath, const TextureLoader& loadTexture,
         std::vector<std::string>& warnings,
         std::vector<std::filesystem::path>* materialFiles = nullptr);
+
+    // load() in its two steps, so that the model cache can keep the first one's result: the
+    // triangles (their faces' material indices set, their materials not made yet) and what
+    // completes them, which complete() then turns into the materials, adding the reading's
+    // warnings to `warnings` in the order load() gives them.
+    struct Geometry {
+        std::shared_ptr<TriangleMesh> triangles;
+        ObjCompletion completion;
+    };
+    static Geometry readGeometry(const std::filesystem::path& objPath);
+    static std::vector<std::shared_ptr<const Material>> complete(
+        const std::filesystem::path& objPath, const ObjCompletion& completion,
+        const TextureLoader& loadTexture, std::vector<std::string>& warnings,
+        std::vector<std::filesystem::path>* materialFiles = nullptr);
+    // The MTL files that the libraries of `completion` name, found or not: what the model also
+    // depends on.
+    static std::vector<std::filesystem::path> libraryPaths(const std::filesystem::path& objPath,
+                                                           const ObjCompletion& completion);
 };
 
 }  // namespace lancer
