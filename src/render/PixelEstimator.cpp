@@ -165,10 +165,13 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
     for (int target = batchSize_;; target = std::min(target + batchSize_, maxSamples_)) {
         for (; n < target; ++n) {
             sampler.startSample(n);
-            const Vec2 filterPoint = sampler.get2D();
-            // A single sample goes through the pixel centre, as a classic ray tracer's.
-            const FilterSample film =
-                maxSamples_ == 1 ? FilterSample{{0, 0}, 1} : filterSampler_.sample(filterPoint);
+            // A single sample goes through the pixel centre, as a classic ray tracer's: its
+            // filter point keeps its place among the requests, undrawn.
+            FilterSample film{{0, 0}, 1};
+            if (maxSamples_ == 1)
+                sampler.skip2D();
+            else
+                film = filterSampler_.sample(sampler.get2D());
             // A pinhole's lens sample keeps its place among the requests, undrawn.
             Vec2 lens;
             if (camera.usesLensSample())
