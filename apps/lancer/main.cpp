@@ -31,6 +31,7 @@
 #include "io/Fingerprint.h"
 #include "io/ImageWriter.h"
 #include "io/InputFile.h"
+#include "io/ModelCache.h"
 #include "io/ResumeFile.h"
 #include "io/SceneLoader.h"
 #include "radiosity/RadiositySolver.h"
@@ -66,6 +67,8 @@ struct Options {
     bool resume = false;
     std::optional<std::string> saveRadiosity, loadRadiosity;
     std::optional<std::string> maxMemory;
+    std::optional<std::string> modelCache;  // --model-cache's folder
+    bool noModelCache = false;
 };
 
 int fail(int status, const std::string& message) {
@@ -125,6 +128,20 @@ std::optional<std::string> checkFrames(const FrameRange& range, const std::strin
     return "--frames " + text +
            ": the frames must satisfy 1 <= A <= B <= " + std::to_string(frames) +
            " (the animation's frames)";
+}
+
+// The model cache that the options ask for (by default, the user's cache folder), or none. Its
+// entries are this executable's: a rebuilt lancer makes its own (its layout or trees may differ).
+std::optional<ModelCache> modelCacheOf(const Options& options) {
+    if (options.noModelCache) return std::nullopt;
+    const std::optional<fs::path> folder =
+        options.modelCache ? fs::path(*options.modelCache) : ModelCache::defaultFolder();
+    if (!folder) return std::nullopt;
+    std::error_code error;
+    const fs::path self = fs::read_symlink("/proc/self/exe", error);  // Linux's own path to it
+    std::string identity = LANCER_VERSION;
+    if (!error) identity += " " + std::to_string(Fingerprint().addFile(self).value());
+    return ModelCache(*folder, identity);
 }
 
 // The output of an animation's frame: OUT-0001.EXT for frame 1 of OUT.EXT.
@@ -562,7 +579,9 @@ int run(Options options, Cluster& cluster) {
     }
     const int firstLoaded = asked ? asked->first : 1;
     std::vector<std::string> warnings;
-    Scene scene = SceneLoader::loadFile(options.scene, warnings, firstLoaded);
+    const std::optional<ModelCache> modelCache = modelCacheOf(options);
+    const ModelCache* models = modelCache ? &*modelCache : nullptr;
+    Scene scene = SceneLoader::loadFile(options.scene, warnings, firstLoaded, models);
     if (!options.quiet)
         for (const std::string& warning : warnings)
             std::cerr << warning << '\n';
@@ -609,7 +628,7 @@ int run(Options options, Cluster& cluster) {
         }
         if (frame != firstLoaded) {
             std::vector<std::string> again;  // the same warnings as the first frame's
-            scene = SceneLoader::loadFile(options.scene, again, frame);
+            scene = SceneLoader::loadFile(options.scene, again, frame, models);
         }
         if (const int status =
                 renderImage(options, cluster, std::move(scene), frameOutput, aovs, frame);
@@ -721,6 +740,14 @@ int main(int argc, char** argv) {
                    "Radiosity: save the solution to FILE, for other views of the same scene");
     app.add_option("--load-radiosity", options.loadRadiosity,
                    "Radiosity: use the solution saved in FILE instead of solving again");
+    auto* modelCache =
+        app.add_option("--model-cache", options.modelCache,
+                       "Keep large OBJ models (8 MiB and more), read and built, in FOLDER, and "
+                       "take them from there while their files are unchanged; default: "
+                       "$XDG_CACHE_HOME/lancer/models or ~/.cache/lancer/models");
+    app.add_flag("--no-model-cache", options.noModelCache,
+                 "Read every model from its file, and keep none")
+        ->excludes(modelCache);
     app.add_option("--max-memory", options.maxMemory,
                    "The most memory the image's buffers may take, as 500M, 64G or 2T; "
                    "default: the machine's memory")

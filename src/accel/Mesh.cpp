@@ -1,6 +1,7 @@
 #include "accel/Mesh.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <tuple>
 #include <utility>
 
@@ -77,6 +78,40 @@ Mesh::Mesh(TriangleMesh triangles) : Shape(nullptr), triangles_(std::move(triang
             pack.triangle[lane] = triangle;
         }
     });
+}
+
+namespace {
+
+// Why `triangles` cannot be a mesh's, or nothing.
+const char* misfit(const TriangleMesh& triangles) {
+    const std::size_t vertexCount = triangles.positions.size();
+    if (triangles.indices.empty() || triangles.indices.size() % 3 != 0) return "no triangles";
+    if ((!triangles.normals.empty() && triangles.normals.size() != vertexCount) ||
+        (!triangles.uvs.empty() && triangles.uvs.size() != vertexCount))
+        return "a vertex attribute is not given for every vertex";
+    if (triangles.faceMaterials.size() != triangles.triangleCount())
+        return "not every triangle has a material";
+    for (const std::uint32_t vertex : triangles.indices)
+        if (vertex >= vertexCount) return "a triangle's vertex is past the vertices";
+    for (const std::uint32_t material : triangles.faceMaterials)
+        if (material >= triangles.materials.size()) return "a triangle's material is missing";
+    return nullptr;
+}
+
+}  // namespace
+
+Mesh::Mesh(Parts parts) : Shape(nullptr), triangles_(std::move(parts.triangles)) {
+    if (const char* why = misfit(triangles_)) throw std::invalid_argument(why);
+    packs_ = std::move(parts.packs);
+    const std::size_t triangleCount = triangles_.triangleCount();
+    for (const TrianglePack& pack : packs_)
+        for (const std::uint32_t triangle : pack.triangle)
+            if (triangle >= triangleCount)
+                throw std::invalid_argument("a pack's triangle is past the triangles");
+    bvh_ = WideBvh(parts.bounds, std::move(parts.nodes),
+                   [&](std::uint32_t firstPack, std::uint32_t count) {
+                       return std::uint64_t{firstPack} + packCount(count) <= packs_.size();
+                   });
 }
 
 void Mesh::prefetchPack(std::uint32_t pack) const {

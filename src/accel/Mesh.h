@@ -1,9 +1,13 @@
 #pragma once
 
+#include <span>
+#include <vector>
+
 #include "accel/WideBvh.h"
 #include "geometry/Shape.h"
 #include "geometry/Triangle.h"
 #include "geometry/TriangleMesh.h"
+#include "geometry/TrianglePack.h"
 
 namespace lancer {
 
@@ -15,6 +19,18 @@ namespace lancer {
 class Mesh final : public Shape {
 public:
     explicit Mesh(TriangleMesh triangles);
+
+    // What a built mesh is made of, to keep it and make it again without the build (the model
+    // cache): the triangles in the order of the leaves, the BVH's nodes and the leaves' packs.
+    struct Parts {
+        TriangleMesh triangles;
+        Bounds3 bounds;
+        std::vector<WideBvhNode> nodes;
+        std::vector<TrianglePack> packs;
+    };
+    // Throws std::invalid_argument when the parts do not fit together: an index past its array
+    // (a vertex, a material, a triangle of a pack, the packs of a leaf) or a malformed tree.
+    explicit Mesh(Parts parts);
 
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
@@ -35,6 +51,9 @@ public:
     Tessellation tessellate(const TessellationRequest& request) const override;
 
     const TriangleMesh& triangles() const { return triangles_; }
+    // The rest of the parts.
+    std::span<const WideBvhNode> bvhNodes() const { return bvh_.nodes(); }
+    std::span<const TrianglePack> packs() const { return packs_; }
     // Bytes held by the mesh's arrays and its BVH.
     std::size_t memoryBytes() const;
 

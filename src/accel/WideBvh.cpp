@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
+#include <stdexcept>
 
 namespace lancer {
 
@@ -11,6 +13,37 @@ WideBvh::WideBvh(const Bvh& bvh, const LeafLayout& layOutLeaf) : bounds_(bvh.bou
     nodes_.emplace_back();
     collapse(binary, 0, 0, layOutLeaf);
     nodes_.shrink_to_fit();
+}
+
+WideBvh::WideBvh(const Bounds3& bounds, std::vector<WideBvhNode> nodes, const LeafCheck& leafFits)
+    : bounds_(bounds), nodes_(std::move(nodes)) {
+    // The scene's tree is built over these bounds: they must be a box.
+    for (int axis = 0; axis < 3; ++axis)
+        if (!(std::isfinite(bounds.min[axis]) && std::isfinite(bounds.max[axis]) &&
+              bounds.min[axis] <= bounds.max[axis]))
+            throw std::invalid_argument("the tree's bounds are not a box");
+    // Children come after their node, so one pass in order knows each node's depth first.
+    std::vector<std::uint8_t> depth(nodes_.size(), 0);
+    for (std::size_t index = 0; index < nodes_.size(); ++index) {
+        const WideBvhNode& node = nodes_[index];
+        for (int slot = 0; slot < WideBvhNode::kWidth; ++slot) {
+            const std::uint32_t child = node.child[slot];
+            if (node.primitiveCount[slot] != 0) {
+                if (!leafFits(child, node.primitiveCount[slot]))
+                    throw std::invalid_argument("a leaf of the tree is past the primitives");
+            } else if (child == 0) {  // the root is no one's child: an unused slot
+                // Not crossed by any ray, as the build leaves it (NaN fails the test too).
+                if (!(node.bounds[0][0][slot] > node.bounds[1][0][slot]))
+                    throw std::invalid_argument("an unused slot of the tree has a box");
+            } else {
+                if (child <= index || child >= nodes_.size())
+                    throw std::invalid_argument("a node of the tree is not after its parent");
+                if (depth[index] + 1 > Bvh::kMaxDepth)
+                    throw std::invalid_argument("the tree is too deep");
+                depth[child] = std::max<std::uint8_t>(depth[child], depth[index] + 1);
+            }
+        }
+    }
 }
 
 // Fills wide node `index` with the binary subtree under `root`, cut into at most kWidth children

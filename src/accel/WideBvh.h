@@ -48,6 +48,15 @@ public:
     // An empty hierarchy: nothing is ever hit.
     WideBvh() = default;
     WideBvh(const Bvh& bvh, const LeafLayout& layOutLeaf);
+    // A tree kept from an earlier build (the model cache), its nodes as nodes() gave them.
+    // Throws std::invalid_argument when they are not a tree the traversal can walk safely: an
+    // interior child not after its node or past the last, bounds that are not a finite box, a path
+    // deeper than Bvh::kMaxDepth, an unused slot whose box is not empty, or a leaf that
+    // `leafFits(first, count)` refuses.
+    using LeafCheck = std::function<bool(std::uint32_t first, std::uint32_t count)>;
+    WideBvh(const Bounds3& bounds, std::vector<WideBvhNode> nodes, const LeafCheck& leafFits);
+
+    std::span<const WideBvhNode> nodes() const { return nodes_; }
 
     const Bounds3& bounds() const { return bounds_; }
     std::size_t memoryBytes() const { return nodes_.size() * sizeof(WideBvhNode); }

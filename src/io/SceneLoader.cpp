@@ -28,6 +28,7 @@
 #include "io/InputFile.h"
 #include "io/JsonDocument.h"
 #include "io/Keyframes.h"
+#include "io/ModelCache.h"
 #include "io/ObjLoader.h"
 #include "io/PlyLoader.h"
 #include "lights/AreaLight.h"
@@ -110,7 +111,8 @@ class SceneLoader::Reader {
 
 public:
     // `frame`: the frame of the scene's animation to load, from 1 (any frame, without one).
-    Reader(const JsonDocument& doc, std::vector<std::string>& warnings, int frame);
+    Reader(const JsonDocument& doc, std::vector<std::string>& warnings, int frame,
+           const ModelCache* modelCache);
     Scene load();
 
 private:
@@ -202,12 +204,17 @@ private:
                           const std::optional<Transform>& transform);
     Shapes loadGltfObject(const Node& node, const char* what,
                           const std::optional<Transform>& transform);
-    // An instance of the model that the object's "file" names, read by `read` ("model" names it
-    // in messages), with the object's material if it has one, else the model's own.
-    using ModelReader = std::function<std::shared_ptr<TriangleMesh>(const std::filesystem::path&)>;
+    // An instance of the model that the object's "file" names, made by `make` (read, smoothed
+    // by the angle it is given, and built; "model" names it in messages), with the object's
+    // material if it has one, else the model's own.
+    using MeshMaker = std::function<std::shared_ptr<const Mesh>(const std::filesystem::path&,
+                                                                const std::optional<float>&)>;
     Shapes loadModelObject(const Node& node, const char* what,
                            const std::optional<Transform>& transform, const std::string& model,
-                           const ModelReader& read);
+                           const MeshMaker& make);
+    // The mesh of a model's triangles, smoothed by `smooth` degrees if given.
+    std::shared_ptr<const Mesh> builtMesh(std::shared_ptr<TriangleMesh> triangles,
+                                          const std::optional<float>& smooth);
     Shapes loadCsg(const Node& node, const char* what, const std::optional<Transform>& transform);
     // An instance of each shape of the group the object names, placed by its transform.
     Shapes loadGroupObject(const Node& node, const char* what,
@@ -227,8 +234,7 @@ private:
     static Shapes only(std::unique_ptr<Shape> shape);
     // `smooth`: the threshold angle of SmoothingByAngle, if the object asks for it.
     std::shared_ptr<const Mesh> loadMesh(const Node& file, const std::string& model,
-                                         const ModelReader& read,
-                                         const std::optional<float>& smooth);
+                                         const MeshMaker& make, const std::optional<float>& smooth);
     // Image files are read once, however many materials (and models) use them.
     std::shared_ptr<const Texture> loadImageTexture(
         const std::filesystem::path& path,
@@ -338,6 +344,7 @@ private:
     // The animation: the frame loaded, the keyframes of the camera's keys and of the named
     // objects' transforms, and where each object name was given (file:line:column).
     int frame_;
+    const ModelCache* modelCache_;
     Keyframes::Interpolation interpolation_ = Keyframes::Interpolation::Linear;
     std::map<std::string, Keyframes> cameraKeyframes_;
     std::map<std::string, Keyframes> objectKeyframes_;
@@ -509,20 +516,22 @@ const std::vector<std::string> kSceneFileKeys{"render",  "camera",    "backgroun
 }  // namespace
 
 Scene SceneLoader::loadFile(const std::filesystem::path& path, std::vector<std::string>& warnings,
-                            int frame) {
-    Scene scene = loadString(readSceneText(path), path.string(), warnings, frame);
+                            int frame, const ModelCache* modelCache) {
+    Scene scene = loadString(readSceneText(path), path.string(), warnings, frame, modelCache);
     scene.addSourceFile(path);
     return scene;
 }
 
 Scene SceneLoader::loadString(const std::string& text, const std::string& fileName,
-                              std::vector<std::string>& warnings, int frame) {
+                              std::vector<std::string>& warnings, int frame,
+                              const ModelCache* modelCache) {
     const JsonDocument doc = JsonDocument::parse(text, fileName);
-    return Reader(doc, warnings, frame).load();
+    return Reader(doc, warnings, frame, modelCache).load();
 }
 
-SceneLoader::Reader::Reader(const JsonDocument& doc, std::vector<std::string>& warnings, int frame)
-    : doc_(doc), warnings_(warnings), frame_(frame) {}
+SceneLoader::Reader::Reader(const JsonDocument& doc, std::vector<std::string>& warnings, int frame,
+                            const ModelCache* modelCache)
+    : doc_(doc), warnings_(warnings), frame_(frame), modelCache_(modelCache) {}
 
 Scene SceneLoader::Reader::load() {
     const auto start = std::chrono::steady_clock::now();
@@ -962,37 +971,48 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadTriangle(
 
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadMeshObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
-    const auto readModel = [this](const std::filesystem::path& path) {
-        if (PlyLoader::isPly(path)) return PlyLoader::load(path, warnings_);
+    const auto makeMesh = [this](const std::filesystem::path& path,
+                                 const std::optional<float>& smooth) {
+        if (PlyLoader::isPly(path)) return builtMesh(PlyLoader::load(path, warnings_), smooth);
         const auto loadTexture = [this](const std::filesystem::path& p,
                                         ImageReader::Content content) {
             return loadImageTexture(p, content);
         };
         std::vector<std::filesystem::path> materialFiles;
-        std::shared_ptr<TriangleMesh> mesh =
-            ObjLoader::load(path, loadTexture, warnings_, &materialFiles);
+        std::shared_ptr<const Mesh> mesh;
+        if (modelCache_)
+            mesh = modelCache_->findObj(path, smooth, loadTexture, warnings_, materialFiles);
+        if (!mesh) {
+            ObjLoader::Geometry geometry = ObjLoader::readGeometry(path);
+            geometry.triangles->materials = ObjLoader::complete(
+                path, geometry.completion, loadTexture, warnings_, &materialFiles);
+            mesh = builtMesh(std::move(geometry.triangles), smooth);
+            if (modelCache_)
+                modelCache_->storeObj(path, smooth, geometry.completion, *mesh, warnings_);
+        }
         for (const std::filesystem::path& file : materialFiles)
             scene_.addSourceFile(file);
         return mesh;
     };
-    return loadModelObject(node, what, transform, "mesh", readModel);
+    return loadModelObject(node, what, transform, "mesh", makeMesh);
 }
 
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadGltfObject(
     const Node& node, const char* what, const std::optional<Transform>& transform) {
-    const auto readGltf = [this](const std::filesystem::path& path) {
+    const auto makeGltf = [this](const std::filesystem::path& path,
+                                 const std::optional<float>& smooth) {
         std::vector<std::filesystem::path> externalFiles;
-        std::shared_ptr<TriangleMesh> mesh = GltfLoader::load(path, warnings_, &externalFiles);
+        std::shared_ptr<TriangleMesh> triangles = GltfLoader::load(path, warnings_, &externalFiles);
         for (const std::filesystem::path& file : externalFiles)
             scene_.addSourceFile(file);
-        return mesh;
+        return builtMesh(std::move(triangles), smooth);
     };
-    return loadModelObject(node, what, transform, "glTF model", readGltf);
+    return loadModelObject(node, what, transform, "glTF model", makeGltf);
 }
 
 SceneLoader::Reader::Shapes SceneLoader::Reader::loadModelObject(
     const Node& node, const char* what, const std::optional<Transform>& transform,
-    const std::string& model, const ModelReader& read) {
+    const std::string& model, const MeshMaker& make) {
     checkKeys(node, what, {"type", "file", "material", "transform", "name", "smooth"});
     std::optional<float> smooth;
     if (node.has("smooth")) {
@@ -1000,7 +1020,7 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadModelObject(
         if (*smooth > SmoothingByAngle::kMaxDegrees)
             fail(node["smooth"], "\"smooth\" must be between 0 and 180 degrees");
     }
-    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what), model, read, smooth);
+    std::shared_ptr<const Mesh> mesh = loadMesh(require(node, "file", what), model, make, smooth);
     scene_.statistics().instancedTriangles += mesh->triangles().triangleCount();
     // Without "material", the model's own materials (an OBJ's .mtl, a glTF's) are used.
     const Material* material = node.has("material") ? materialOf(node) : nullptr;
@@ -1090,21 +1110,26 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::only(std::unique_ptr<Shape> sha
     return shapes;
 }
 
+std::shared_ptr<const Mesh> SceneLoader::Reader::builtMesh(std::shared_ptr<TriangleMesh> triangles,
+                                                           const std::optional<float>& smooth) {
+    if (smooth) SmoothingByAngle::apply(*triangles, *smooth);
+    const auto buildStart = std::chrono::steady_clock::now();
+    auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
+    scene_.statistics().buildSeconds += secondsSince(buildStart);
+    return mesh;
+}
+
 std::shared_ptr<const Mesh> SceneLoader::Reader::loadMesh(const Node& file,
                                                           const std::string& model,
-                                                          const ModelReader& read,
+                                                          const MeshMaker& make,
                                                           const std::optional<float>& smooth) {
     const std::filesystem::path path = folderOf(file) / readString(file);
     const std::string key = model + " " + std::filesystem::weakly_canonical(path).string() +
                             (smooth ? " smooth " + std::to_string(*smooth) : "");
     if (const auto it = meshes_.find(key); it != meshes_.end()) return it->second;
     try {
-        std::shared_ptr<TriangleMesh> triangles = read(path);
+        std::shared_ptr<const Mesh> mesh = make(path, smooth);
         scene_.addSourceFile(path);
-        if (smooth) SmoothingByAngle::apply(*triangles, *smooth);
-        const auto buildStart = std::chrono::steady_clock::now();
-        auto mesh = std::make_shared<const Mesh>(std::move(*triangles));
-        scene_.statistics().buildSeconds += secondsSince(buildStart);
         meshes_[key] = mesh;
         scene_.statistics().uniqueTriangles += mesh->triangles().triangleCount();
         scene_.statistics().meshBytes += mesh->memoryBytes();

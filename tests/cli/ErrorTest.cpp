@@ -795,7 +795,7 @@ const ErrorCase kErrorCases[] = {
      .prefix = "lancer: error: ",
      .mentions =
          {R"(unknown option "--sample" (did you mean "--spp"?); expected "--help", "--version", "--output")",
-          R"("--save-radiosity", "--load-radiosity" or "--max-memory")"},
+          R"("--save-radiosity", "--load-radiosity", "--model-cache", "--no-model-cache" or "--max-memory")"},
      .arguments = {"--sample", "4"}},
     {.name = "MisspeltAovListsTheValidOnes",
      .prefix = "lancer: error: ",

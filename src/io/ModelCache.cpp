@@ -1,0 +1,220 @@
+#include "io/ModelCache.h"
+
+#include <bit>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <string_view>
+#include <utility>
+
+#include "accel/Mesh.h"
+#include "io/AtomicFile.h"
+#include "io/Fingerprint.h"
+#include "io/InputFile.h"
+#include "io/ObjSupport.h"
+#include "util/ByteReader.h"
+
+namespace lancer {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr char kMagic[16] = {'l', 'a', 'n', 'c', 'e', 'r', ' ',  'm',
+                             'o', 'd', 'e', 'l', ' ', '1', '\n', '\0'};
+
+// An entry that cannot be used, for a reason worth a warning.
+struct DamagedEntry {
+    std::string why;
+};
+
+template <typename T>
+void append(std::string& bytes, const T& value) {
+    bytes.append(reinterpret_cast<const char*>(&value), sizeof(T));
+}
+
+template <typename T>
+void appendArray(std::string& bytes, std::span<const T> values) {
+    append(bytes, std::uint64_t{values.size()});
+    bytes.append(reinterpret_cast<const char*>(values.data()), values.size_bytes());
+}
+
+void appendTexts(std::string& bytes, const std::vector<std::string>& texts) {
+    append(bytes, std::uint64_t{texts.size()});
+    for (const std::string& text : texts)
+        appendArray(bytes, std::span<const char>(text));
+}
+
+template <typename T>
+std::vector<T> readArray(ByteReader& reader) {
+    const std::uint64_t count = reader.readCount(sizeof(T));
+    const std::string_view bytes = reader.readBytes(count * sizeof(T));
+    std::vector<T> values(count);
+    std::memcpy(values.data(), bytes.data(), bytes.size());
+    return values;
+}
+
+std::vector<std::string> readTexts(ByteReader& reader) {
+    std::vector<std::string> texts(reader.readCount(sizeof(std::uint64_t)));
+    for (std::string& text : texts) {
+        const std::vector<char> chars = readArray<char>(reader);
+        text.assign(chars.begin(), chars.end());
+    }
+    return texts;
+}
+
+// The MTL files as they are now (a missing one counts by its path).
+std::uint64_t librariesFingerprint(const fs::path& objPath, const ObjCompletion& completion) {
+    Fingerprint fingerprint;
+    for (const fs::path& library : ObjLoader::libraryPaths(objPath, completion))
+        fingerprint.addFile(library);
+    return fingerprint.value();
+}
+
+}  // namespace
+
+ModelCache::ModelCache(fs::path folder, std::string programIdentity, std::uintmax_t minimumBytes)
+    : folder_(std::move(folder)),
+      programIdentity_(std::move(programIdentity)),
+      minimumBytes_(minimumBytes) {}
+
+std::optional<fs::path> ModelCache::defaultFolder() {
+    const auto variable = [](const char* name) -> std::optional<fs::path> {
+        const char* value = std::getenv(name);
+        if (!value || !*value) return std::nullopt;
+        return fs::path(value);
+    };
+    if (const auto xdg = variable("XDG_CACHE_HOME")) return *xdg / "lancer" / "models";
+    if (const auto home = variable("HOME")) return *home / ".cache" / "lancer" / "models";
+    if (const auto local = variable("LOCALAPPDATA")) return *local / "lancer" / "models";
+    return std::nullopt;
+}
+
+bool ModelCache::keeps(const fs::path& modelPath) const {
+    std::error_code error;
+    const std::uintmax_t size = fs::file_size(modelPath, error);
+    return !error && size >= minimumBytes_;
+}
+
+fs::path ModelCache::entryPath(const fs::path& modelPath,
+                               const std::optional<float>& smooth) const {
+    std::error_code error;
+    const std::uint64_t name = Fingerprint()
+                                   .addText(fs::weakly_canonical(modelPath, error).string())
+                                   .addNumber(smooth ? std::bit_cast<std::uint32_t>(*smooth) : ~0u)
+                                   .value();
+    char hex[17];
+    std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(name));
+    return folder_ / (std::string(hex) + ".obj-model");
+}
+
+std::uint64_t ModelCache::modelFingerprint(const fs::path& modelPath,
+                                           const std::optional<float>& smooth) const {
+    return Fingerprint()
+        .addText(programIdentity_)
+        .addNumber(sizeof(Vec3))
+        .addNumber(sizeof(WideBvhNode))
+        .addNumber(sizeof(TrianglePack))
+        // The path as given, which the warnings kept in the entry name.
+        .addText(modelPath.string())
+        .addFile(modelPath)
+        .addNumber(smooth ? std::bit_cast<std::uint32_t>(*smooth) : ~0u)
+        .value();
+}
+
+std::shared_ptr<const Mesh> ModelCache::findObj(const fs::path& objPath,
+                                                const std::optional<float>& smooth,
+                                                const ObjLoader::TextureLoader& loadTexture,
+                                                std::vector<std::string>& warnings,
+                                                std::vector<fs::path>& materialFiles) const {
+    if (!keeps(objPath)) return nullptr;
+    const fs::path entry = entryPath(objPath, smooth);
+    std::error_code error;
+    if (!fs::is_regular_file(entry, error)) return nullptr;
+    std::string bytes;
+    try {
+        bytes = InputFile::read(entry, "a model cache entry", "model cache entries",
+                                InputFile::kMaxModelBytes * 4);
+    } catch (const InputError&) {
+        return nullptr;  // gone since, or unreadable: the model is read from its file
+    }
+    if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
+        warn(warnings, entry, "not a lancer model cache entry; the model is read from its file");
+        return nullptr;
+    }
+    try {
+        ByteReader reader(bytes, [](const std::string& what) { throw DamagedEntry{what}; });
+        reader.readBytes(sizeof kMagic);
+        if (reader.read<std::uint64_t>() != modelFingerprint(objPath, smooth)) return nullptr;
+        ObjCompletion completion;
+        completion.libraryNames = readTexts(reader);
+        if (reader.read<std::uint64_t>() != librariesFingerprint(objPath, completion))
+            return nullptr;
+        completion.materialSources = readArray<int>(reader);
+        completion.warningsBeforeMaterials = readTexts(reader);
+        completion.warningsAfterMaterials = readTexts(reader);
+        Mesh::Parts parts;
+        parts.triangles.positions = readArray<Vec3>(reader);
+        parts.triangles.normals = readArray<Vec3>(reader);
+        parts.triangles.uvs = readArray<Vec2>(reader);
+        parts.triangles.indices = readArray<std::uint32_t>(reader);
+        parts.triangles.faceMaterials = readArray<std::uint32_t>(reader);
+        parts.bounds = reader.read<Bounds3>();
+        parts.nodes = readArray<WideBvhNode>(reader);
+        parts.packs = readArray<TrianglePack>(reader);
+        if (!reader.atEnd()) reader.fail("has bytes after its end");
+        // The model's warnings and files count only if the parts make a mesh.
+        std::vector<std::string> modelWarnings;
+        std::vector<fs::path> modelMaterialFiles;
+        parts.triangles.materials = ObjLoader::complete(objPath, completion, loadTexture,
+                                                        modelWarnings, &modelMaterialFiles);
+        auto mesh = std::make_shared<const Mesh>(std::move(parts));
+        warnings.insert(warnings.end(), modelWarnings.begin(), modelWarnings.end());
+        materialFiles.insert(materialFiles.end(), modelMaterialFiles.begin(),
+                             modelMaterialFiles.end());
+        return mesh;
+    } catch (const DamagedEntry& damaged) {
+        warn(warnings, entry,
+             "the model cache entry " + damaged.why + "; the model is read from its file");
+    } catch (const std::invalid_argument& misfit) {
+        warn(warnings, entry,
+             std::string("the model cache entry is damaged (") + misfit.what() +
+                 "); the model is read from its file");
+    }
+    return nullptr;
+}
+
+void ModelCache::storeObj(const fs::path& objPath, const std::optional<float>& smooth,
+                          const ObjCompletion& completion, const Mesh& mesh,
+                          std::vector<std::string>& warnings) const {
+    if (!keeps(objPath)) return;
+    const TriangleMesh& triangles = mesh.triangles();
+    std::string bytes(kMagic, sizeof kMagic);
+    append(bytes, modelFingerprint(objPath, smooth));
+    appendTexts(bytes, completion.libraryNames);
+    append(bytes, librariesFingerprint(objPath, completion));
+    appendArray(bytes, std::span<const int>(completion.materialSources));
+    appendTexts(bytes, completion.warningsBeforeMaterials);
+    appendTexts(bytes, completion.warningsAfterMaterials);
+    appendArray(bytes, std::span<const Vec3>(triangles.positions));
+    appendArray(bytes, std::span<const Vec3>(triangles.normals));
+    appendArray(bytes, std::span<const Vec2>(triangles.uvs));
+    appendArray(bytes, std::span<const std::uint32_t>(triangles.indices));
+    appendArray(bytes, std::span<const std::uint32_t>(triangles.faceMaterials));
+    append(bytes, mesh.bounds());
+    appendArray(bytes, mesh.bvhNodes());
+    appendArray(bytes, mesh.packs());
+    const fs::path entry = entryPath(objPath, smooth);
+    try {
+        std::error_code error;
+        fs::create_directories(folder_, error);
+        AtomicFile::write(entry, bytes.data(), bytes.size(), "model cache entry");
+    } catch (const std::runtime_error& e) {
+        warn(warnings, objPath,
+             std::string("not kept in the model cache: ") + e.what() +
+                 " (--no-model-cache leaves the cache alone)");
+    }
+}
+
+}  // namespace lancer
