@@ -101,7 +101,13 @@ Vec2 Sampler::get2D() {
 }
 
 void Sampler::skip2D() {
-    nextRequestSeeds(RequestKind::point);
+    // A request's seeds hash only the pixel and the request's number: a skipped one needs none.
+    // It still takes its place in the cache, marked so that a point asked there later is hashed.
+    const int request = request_++;
+    if (request == cachedRequestCount_ && request < kCachedRequests) {
+        cachedRequests_[static_cast<std::size_t>(request)] = {{}, RequestKind::skipped};
+        ++cachedRequestCount_;
+    }
 }
 
 float Sampler::get1D() {

@@ -32,7 +32,7 @@ public:
     void skip2D();
 
 private:
-    enum class RequestKind : std::uint8_t { point, value };
+    enum class RequestKind : std::uint8_t { point, value, skipped };
 
     // The scramble seeds of one request: for a point, those of the sample index and of its two
     // coordinates; for a value, those of the index and of the value (the third is unused).

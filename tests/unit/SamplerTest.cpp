@@ -134,6 +134,27 @@ TEST(SamplerTest, APointPassedOverLeavesTheRequestsAfterItTheirPoints) {
     }
 }
 
+TEST(SamplerTest, APointPassedOverByOneSampleIsDrawnByTheNext) {
+    // (Requests are remembered by the first sample that makes them; a skipped one has no seeds.)
+    Sampler mixed(7, 12, 34), drawn(7, 12, 34);
+    mixed.startSample(0);
+    drawn.startSample(0);
+    for (int request = 0; request < 300; ++request) {  // past the requests remembered too
+        mixed.skip2D();
+        drawn.get2D();
+        EXPECT_EQ(mixed.get1D(), drawn.get1D());
+    }
+    for (int i = 1; i < 4; ++i) {
+        mixed.startSample(i);
+        Sampler fresh(7, 12, 34);
+        fresh.startSample(i);
+        for (int request = 0; request < 300; ++request) {
+            EXPECT_EQ(mixed.get2D(), fresh.get2D());
+            EXPECT_EQ(mixed.get1D(), fresh.get1D());
+        }
+    }
+}
+
 TEST(SamplerTest, ASampleDoesNotDependOnTheSamplesBeforeIt) {
     // Threads may render a pixel's samples in any order, or only some of them.
     Sampler inOrder(3, 5, 9), direct(3, 5, 9);
