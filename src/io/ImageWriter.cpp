@@ -12,6 +12,7 @@
 #include "io/AtomicFile.h"
 #include "io/FreeImageSupport.h"
 #include "math/Srgb.h"
+#include "util/ParallelFor.h"
 
 namespace lancer {
 
@@ -49,24 +50,31 @@ const Format* findFormat(const std::filesystem::path& path) {
     return nullptr;
 }
 
+// Rows converted on all the render's threads: the image waits for this after the render.
+template <typename Row>
+void forEachRow(const Image& film, Row&& convertRow) {
+    parallelFor(static_cast<std::size_t>(film.height()), 16,
+                [&](std::size_t y) { convertRow(static_cast<int>(y)); });
+}
+
 FreeImageBitmap toLinearBitmap(const Image& film, FREE_IMAGE_FORMAT format) {
     FreeImageBitmap bitmap(FreeImage_AllocateT(FIT_RGBF, film.width(), film.height()));
     if (!bitmap) return bitmap;
-    for (int y = 0; y < film.height(); ++y) {
+    forEachRow(film, [&](int y) {
         auto* row = reinterpret_cast<FIRGBF*>(
             FreeImage_GetScanLine(bitmap.get(), scanlineOfRow(format, y, film.height())));
         for (int x = 0; x < film.width(); ++x) {
             const Color& c = film.at(x, y);
             row[x] = {c.r, c.g, c.b};
         }
-    }
+    });
     return bitmap;
 }
 
 FreeImageBitmap toSrgbBitmap(const Image& film, FREE_IMAGE_FORMAT format) {
     FreeImageBitmap bitmap(FreeImage_Allocate(film.width(), film.height(), 24));
     if (!bitmap) return bitmap;
-    for (int y = 0; y < film.height(); ++y) {
+    forEachRow(film, [&](int y) {
         BYTE* row = FreeImage_GetScanLine(bitmap.get(), scanlineOfRow(format, y, film.height()));
         for (int x = 0; x < film.width(); ++x, row += 3) {
             const Color& c = film.at(x, y);
@@ -74,7 +82,7 @@ FreeImageBitmap toSrgbBitmap(const Image& film, FREE_IMAGE_FORMAT format) {
             row[FI_RGBA_GREEN] = linearToSrgb8(c.g);
             row[FI_RGBA_BLUE] = linearToSrgb8(c.b);
         }
-    }
+    });
     return bitmap;
 }
 

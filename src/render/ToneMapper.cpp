@@ -6,6 +6,7 @@
 
 #include "math/Float.h"
 #include "util/DidYouMean.h"
+#include "util/ParallelFor.h"
 
 namespace lancer {
 
@@ -59,11 +60,14 @@ Color ToneMapper::display(const Color& radiance) const {
 }
 
 void ToneMapper::mapForOutput(Image& film, bool linear) const {
-    for (int y = 0; y < film.height(); ++y)
+    // Rows on all the render's threads: the image waits for this after the render.
+    parallelFor(static_cast<std::size_t>(film.height()), 16, [&](std::size_t row) {
+        const int y = static_cast<int>(row);
         for (int x = 0; x < film.width(); ++x) {
             Color& c = film.at(x, y);
             c = linear ? exposed(c) : display(c);
         }
+    });
 }
 
 }  // namespace lancer
