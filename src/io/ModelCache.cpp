@@ -1,9 +1,11 @@
 #include "io/ModelCache.h"
 
+#include <array>
 #include <bit>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <stdexcept>
 #include <string_view>
 #include <utility>
@@ -11,9 +13,7 @@
 #include "accel/Mesh.h"
 #include "io/AtomicFile.h"
 #include "io/Fingerprint.h"
-#include "io/InputFile.h"
 #include "io/ObjSupport.h"
-#include "util/ByteReader.h"
 
 namespace lancer {
 
@@ -46,23 +46,54 @@ void appendTexts(std::string& bytes, const std::vector<std::string>& texts) {
         appendArray(bytes, std::span<const char>(text));
 }
 
-template <typename T>
-std::vector<T> readArray(ByteReader& reader) {
-    const std::uint64_t count = reader.readCount(sizeof(T));
-    const std::string_view bytes = reader.readBytes(count * sizeof(T));
-    std::vector<T> values(count);
-    std::memcpy(values.data(), bytes.data(), bytes.size());
-    return values;
-}
-
-std::vector<std::string> readTexts(ByteReader& reader) {
-    std::vector<std::string> texts(reader.readCount(sizeof(std::uint64_t)));
-    for (std::string& text : texts) {
-        const std::vector<char> chars = readArray<char>(reader);
-        text.assign(chars.begin(), chars.end());
+// Reads an entry's values straight from its file into their arrays (an entry is most of a
+// model's memory: the file is not copied whole first), each length checked against what is
+// left of the file, so that no count in a damaged entry asks for more memory than the file holds.
+class EntryReader {
+public:
+    explicit EntryReader(const fs::path& path) : file_(path, std::ios::binary) {
+        std::error_code error;
+        left_ = fs::file_size(path, error);
+        if (!file_ || error) throw DamagedEntry{"cannot be read"};
     }
-    return texts;
-}
+
+    template <typename T>
+    T read() {
+        T value;
+        readInto(&value, sizeof(T));
+        return value;
+    }
+    template <typename T>
+    std::vector<T> readArray() {
+        const auto count = read<std::uint64_t>();
+        if (count > left_ / sizeof(T)) throw DamagedEntry{"is truncated"};
+        std::vector<T> values(count);
+        readInto(values.data(), count * sizeof(T));
+        return values;
+    }
+    std::vector<std::string> readTexts() {
+        const auto count = read<std::uint64_t>();
+        if (count > left_ / sizeof(std::uint64_t)) throw DamagedEntry{"is truncated"};
+        std::vector<std::string> texts(count);  // each with its length first
+        for (std::string& text : texts) {
+            const std::vector<char> chars = readArray<char>();
+            text.assign(chars.begin(), chars.end());
+        }
+        return texts;
+    }
+    std::uint64_t left() const { return left_; }
+
+private:
+    void readInto(void* values, std::uint64_t size) {
+        if (size > left_) throw DamagedEntry{"is truncated"};
+        file_.read(static_cast<char*>(values), static_cast<std::streamsize>(size));
+        if (!file_) throw DamagedEntry{"cannot be read"};
+        left_ -= size;
+    }
+
+    std::ifstream file_;
+    std::uint64_t left_ = 0;
+};
 
 // The MTL files as they are now (a missing one counts by its path).
 std::uint64_t librariesFingerprint(const fs::path& objPath, const ObjCompletion& completion) {
@@ -132,38 +163,33 @@ std::shared_ptr<const Mesh> ModelCache::findObj(const fs::path& objPath,
     const fs::path entry = entryPath(objPath, smooth);
     std::error_code error;
     if (!fs::is_regular_file(entry, error)) return nullptr;
-    std::string bytes;
     try {
-        bytes = InputFile::read(entry, "a model cache entry", "model cache entries",
-                                InputFile::kMaxModelBytes * 4);
-    } catch (const InputError&) {
-        return nullptr;  // gone since, or unreadable: the model is read from its file
-    }
-    if (bytes.size() < sizeof kMagic || std::memcmp(bytes.data(), kMagic, sizeof kMagic) != 0) {
-        warn(warnings, entry, "not a lancer model cache entry; the model is read from its file");
-        return nullptr;
-    }
-    try {
-        ByteReader reader(bytes, [](const std::string& what) { throw DamagedEntry{what}; });
-        reader.readBytes(sizeof kMagic);
+        EntryReader reader(entry);
+        if (reader.left() < sizeof kMagic ||
+            std::memcmp(reader.read<std::array<char, sizeof kMagic>>().data(), kMagic,
+                        sizeof kMagic) != 0) {
+            warn(warnings, entry,
+                 "not a lancer model cache entry; the model is read from its file");
+            return nullptr;
+        }
         if (reader.read<std::uint64_t>() != modelFingerprint(objPath, smooth)) return nullptr;
         ObjCompletion completion;
-        completion.libraryNames = readTexts(reader);
+        completion.libraryNames = reader.readTexts();
         if (reader.read<std::uint64_t>() != librariesFingerprint(objPath, completion))
             return nullptr;
-        completion.materialSources = readArray<int>(reader);
-        completion.warningsBeforeMaterials = readTexts(reader);
-        completion.warningsAfterMaterials = readTexts(reader);
+        completion.materialSources = reader.readArray<int>();
+        completion.warningsBeforeMaterials = reader.readTexts();
+        completion.warningsAfterMaterials = reader.readTexts();
         Mesh::Parts parts;
-        parts.triangles.positions = readArray<Vec3>(reader);
-        parts.triangles.normals = readArray<Vec3>(reader);
-        parts.triangles.uvs = readArray<Vec2>(reader);
-        parts.triangles.indices = readArray<std::uint32_t>(reader);
-        parts.triangles.faceMaterials = readArray<std::uint32_t>(reader);
+        parts.triangles.positions = reader.readArray<Vec3>();
+        parts.triangles.normals = reader.readArray<Vec3>();
+        parts.triangles.uvs = reader.readArray<Vec2>();
+        parts.triangles.indices = reader.readArray<std::uint32_t>();
+        parts.triangles.faceMaterials = reader.readArray<std::uint32_t>();
         parts.bounds = reader.read<Bounds3>();
-        parts.nodes = readArray<WideBvhNode>(reader);
-        parts.packs = readArray<TrianglePack>(reader);
-        if (!reader.atEnd()) reader.fail("has bytes after its end");
+        parts.nodes = reader.readArray<WideBvhNode>();
+        parts.packs = reader.readArray<TrianglePack>();
+        if (reader.left() != 0) throw DamagedEntry{"has bytes after its end"};
         // The model's warnings and files count only if the parts make a mesh.
         std::vector<std::string> modelWarnings;
         std::vector<fs::path> modelMaterialFiles;
