@@ -17,6 +17,7 @@ Instance::Instance(std::shared_ptr<const Shape> shape, const Transform& objectTo
                    m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
                    m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
     flipsOrientation_ = determinant_ < 0;
+    identity_ = objectToWorld.isIdentity();
 }
 
 const Material* Instance::primitiveMaterial(std::uint32_t primitive) const {
@@ -28,13 +29,14 @@ Bounds3 Instance::bounds() const {
 }
 
 Ray Instance::toObject(const Ray& ray, float& shift) const {
+    shift = 0;
+    if (identity_) return ray;
     // The transformed origin carries rounding error; moving it forward to the edge of that error
     // along the ray keeps it from starting behind the surface it left (pbrt 6.8.6). The ray's
     // parameter is unchanged by an affine map, up to this shift.
     Vec3 originError;
     Vec3 origin = worldToObject_.applyPoint(ray.origin, Vec3(0), originError);
     const Vec3 direction = worldToObject_.applyVector(ray.direction);
-    shift = 0;
     if (const float lengthSq = lengthSquared(direction); lengthSq > 0) {
         shift = dot(abs(direction), originError) / lengthSq;
         origin += direction * shift;
@@ -72,6 +74,9 @@ Hit Instance::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     float shift;
     const Ray local = toObject(ray, shift);
     Hit hit = shape_->record(local, crossing);
+    if (material()) hit.material = material();
+    hit.shape = this;
+    if (identity_) return hit;
 
     hit.t += shift;
     Vec3 pError;
@@ -81,8 +86,6 @@ Hit Instance::record(const Ray& ray, const SurfaceCrossing& crossing) const {
     hit.ns = normalize(objectToWorld_.applyNormal(hit.ns));
     hit.dpdu = objectToWorld_.applyVector(hit.dpdu);
     hit.dpdv = objectToWorld_.applyVector(hit.dpdv);
-    if (material()) hit.material = material();
-    hit.shape = this;
     return hit;
 }
 

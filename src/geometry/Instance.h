@@ -49,6 +49,9 @@ private:
     Transform worldToObject_;
     float determinant_;  // of the linear part of objectToWorld
     bool flipsOrientation_;
+    // An object placed without a transform (most models) passes rays and records through as
+    // they are: the identity needs no rounding error bound, and no normal renormalised.
+    bool identity_;
 };
 
 }  // namespace lancer

@@ -40,6 +40,8 @@ public:
     Vec3 applyVector(const Vec3& v, Vec3& resultError) const;
 
     const Matrix& matrix() const { return m_; }
+    // Exactly the identity: applying it changes nothing, with no rounding to account for.
+    bool isIdentity() const { return m_ == Transform().m_; }
 
 private:
     Transform(const Matrix& m, const Matrix& inverse) : m_(m), inverse_(inverse) {}

@@ -102,6 +102,37 @@ TEST(InstanceTest, MaterialOverrideReplacesTheShapesMaterial) {
     EXPECT_EQ(hit.material, &replacement);
 }
 
+TEST(InstanceTest, WithoutATransformTheShapesOwnHitsPassThrough) {
+    // The identity is applied exactly: no shift of t, no widened error bound, no renormalised
+    // normal; only the instance's material and itself are put in the record.
+    BlinnPhongMaterial own, replacement;
+    const auto sphere = std::make_shared<Sphere>(Vec3(0.3f, -0.2f, 0.1f), 1.3f, &own);
+    const Instance placed(sphere, Transform(), &replacement);
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> uniform(-1, 1);
+    int hits = 0;
+    for (int i = 0; i < 200; ++i) {
+        const Ray ray{{uniform(rng) * 1.5f, uniform(rng) * 1.5f, 5},
+                      normalize(Vec3(uniform(rng) * 0.3f, uniform(rng) * 0.3f, -1))};
+        Hit ownHit, placedHit;
+        const bool hitsShape = test::intersectInto(*sphere, ray, kInfinity, ownHit);
+        ASSERT_EQ(test::intersectInto(placed, ray, kInfinity, placedHit), hitsShape);
+        EXPECT_EQ(placed.occluded(ray, kInfinity), hitsShape);
+        if (!hitsShape) continue;
+        ++hits;
+        EXPECT_EQ(placedHit.t, ownHit.t);
+        EXPECT_EQ(placedHit.p, ownHit.p);
+        EXPECT_EQ(placedHit.pError, ownHit.pError);
+        EXPECT_EQ(placedHit.ng, ownHit.ng);
+        EXPECT_EQ(placedHit.ns, ownHit.ns);
+        EXPECT_EQ(placedHit.dpdu, ownHit.dpdu);
+        EXPECT_EQ(placedHit.uv(), ownHit.uv());
+        EXPECT_EQ(placedHit.material, &replacement);
+        EXPECT_EQ(placedHit.shape, &placed);
+    }
+    EXPECT_GT(hits, 50);
+}
+
 TEST(InstanceTest, TransformedTriangleMatchesATriangleMadeOfTransformedVertices) {
     BlinnPhongMaterial material;
     const std::array<Vec3, 3> vertices{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
