@@ -217,6 +217,8 @@ void ModelCache::storeObj(const fs::path& objPath, const std::optional<float>& s
     if (!keeps(objPath)) return;
     const TriangleMesh& triangles = mesh.triangles();
     std::string bytes(kMagic, sizeof kMagic);
+    // The arrays' bytes, with room for the rest: the entry is built in place, never moved.
+    bytes.reserve(mesh.memoryBytes() + (std::size_t{1} << 16));
     append(bytes, modelFingerprint(objPath, smooth));
     appendTexts(bytes, completion.libraryNames);
     append(bytes, librariesFingerprint(objPath, completion));
