@@ -3,7 +3,8 @@
 # 1 spp with a shadow ray per visible point), whole process as a user waits for it (load the OBJ,
 # build, render, write), lancer against Mitsuba 3 llvm_ad_rgb (issue 14's aim: lancer at most 0.5x
 # Mitsuba's time), measured by hyperfine in one run, the two renderers alternating; then lancer's
-# own split of its time (--stats: the scene's load and build, the render).
+# own split of its time (--stats: the scene's load and build, the render), with its model cache
+# and without it.
 #
 #   bench/knot_comparison.sh [--runs N] [--threads T] [--lancer PATH] [--venv DIR] [--dir DIR]
 #
@@ -45,12 +46,20 @@ export DRJIT_LIBLLVM_PATH="$llvm"
 lscpu | grep -E "Model name" | sed 's/^/# /'
 echo "# SIMD: $(grep -o -E 'avx512[a-z]*|avx2|fma' /proc/cpuinfo | sort -u | tr '\n' ' ')"
 echo "# load before: $(cut -d' ' -f1-3 /proc/loadavg)"
-# The warm-up also fills Dr.Jit's kernel cache, as a user's second render finds it.
+# The warm-up also fills Dr.Jit's kernel cache and lancer's model cache (in this folder), as a
+# user's second render finds them; lancer without its model cache reads and builds the model
+# every time, as a first render does.
 hyperfine --runs "$runs" --warmup 1 --export-markdown knot.md \
-    -n "lancer, $threads threads" "$lancer knot.json -o knot-lancer.png --threads $threads --quiet" \
+    -n "lancer, $threads threads" \
+    "$lancer knot.json -o knot-lancer.png --threads $threads --quiet --model-cache model-cache" \
+    -n "lancer --no-model-cache, $threads threads" \
+    "$lancer knot.json -o knot-lancer.png --threads $threads --quiet --no-model-cache" \
     -n "Mitsuba 3 llvm_ad_rgb, $threads threads" "$venv/bin/python render_mitsuba.py"
 cat knot.md
 echo "# load after: $(cut -d' ' -f1-3 /proc/loadavg)"
 echo "# lancer's split (one run):"
-"$lancer" knot.json -o knot-lancer.png --threads "$threads" --stats 2>&1 |
-    grep -E "loaded in|Mrays/s" | sed 's/^/#   /'
+for cache in "--model-cache model-cache" --no-model-cache; do
+    echo "#  $cache:"
+    "$lancer" knot.json -o knot-lancer.png --threads "$threads" --stats $cache 2>&1 |
+        grep -E "loaded in|Mrays/s" | sed 's/^/#   /'
+done
