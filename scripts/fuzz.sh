@@ -6,13 +6,13 @@
 # leaves the input as build/fuzz/findings/TARGET-crash-... (an input taking over 10 s is kept as
 # TARGET-slow-unit-... and the target goes on); any of them makes the script exit 1 once every
 # target has run. Usage: scripts/fuzz.sh [seconds] [target...]; targets: scene obj gltf ply
-# image radiosity resume.
+# image radiosity resume models.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds="${1:-60}"
 shift || true
 targets=("$@")
-[ ${#targets[@]} -gt 0 ] || targets=(scene obj gltf ply image radiosity resume)
+[ ${#targets[@]} -gt 0 ] || targets=(scene obj gltf ply image radiosity resume models)
 
 cmake --preset fuzz > /dev/null
 cmake --build --preset fuzz --target "${targets[@]/#/fuzz_}"
