@@ -6,6 +6,7 @@
 #include "Viewer.h"
 #include "cluster/Cluster.h"
 #include "io/IoLibraries.h"
+#include "util/CpuFeatures.h"
 
 namespace lancer {
 
@@ -49,9 +50,9 @@ const char* simdLevel() {
 
 std::string BuildInfo::describe() {
     return std::string("lancer ") + LANCER_VERSION + "\nbuilt with " + compiler() + " for " +
-           simdLevel() + ", " + Cluster::describe() + "\nlibraries: " + IoLibraries::versions() +
-           ", " + Viewer::libraryVersion() + ", oneTBB " + TBB_VERSION_STRING + ", CLI11 " +
-           CLI11_VERSION;
+           simdLevel() + (CpuFeatures::avx2() ? " (AVX2 kernels on this CPU)" : "") + ", " +
+           Cluster::describe() + "\nlibraries: " + IoLibraries::versions() + ", " +
+           Viewer::libraryVersion() + ", oneTBB " + TBB_VERSION_STRING + ", CLI11 " + CLI11_VERSION;
 }
 
 }  // namespace lancer

@@ -78,8 +78,8 @@ TEST_F(MeshPartsTest, TheMeshMadeAgainFromItsPartsHitsAlike) {
     int hits = 0;
     for (int i = 0; i < 400; ++i) {
         const float x = 0.05f * static_cast<float>(i % 20) + 0.5f * static_cast<float>(i / 20);
-        const Ray ray(Vec3(x, 0.37f * static_cast<float>(i % 23), 5),
-                      normalize(Vec3(0.1f, 0.2f, -1)));
+        const Ray ray{Vec3(x, 0.37f * static_cast<float>(i % 23), 5),
+                      normalize(Vec3(0.1f, 0.2f, -1))};
         const auto a = built_.cross(ray, kInfinity), b = again.cross(ray, kInfinity);
         ASSERT_EQ(a.has_value(), b.has_value());
         if (a) {

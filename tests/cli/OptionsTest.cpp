@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -192,6 +194,36 @@ TEST(CliVersion, SaysTheBuildAndTheLibraries) {
          {"FreeImage 3.", "nlohmann-json 3.", "tinyobjloader ", "SDL2 2.", "oneTBB 20", "CLI11 2."})
         EXPECT_NE(version.find(library), std::string::npos) << library << " in " << version;
 }
+
+// The kernels chosen by the CPU give the image of the baseline ones, byte for byte; the
+// environment's LANCER_SIMD=baseline asks for those, and --version says which run.
+#ifndef _WIN32  // setenv
+TEST(CliSimd, TheBaselineKernelsGiveTheSameImage) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const std::vector<std::string> render{"scene.json", "--width", "96", "--height",
+                                          "72",         "--spp",   "2",  "--quiet"};
+    const auto withOutput = [&](const std::string& output) {
+        std::vector<std::string> arguments = render;
+        arguments.insert(arguments.end(), {"-o", output});
+        return arguments;
+    };
+    ASSERT_EQ(runLancer(withOutput("best.pfm"), folder.path()).exitStatus, 0);
+    const std::string bestVersion = runLancer({"--version"}, folder.path()).standardOutput;
+    ::setenv("LANCER_SIMD", "baseline", 1);
+    const RunResult baseline = runLancer(withOutput("baseline.pfm"), folder.path());
+    const std::string baselineVersion = runLancer({"--version"}, folder.path()).standardOutput;
+    ::unsetenv("LANCER_SIMD");
+    ASSERT_EQ(baseline.exitStatus, 0) << baseline;
+    EXPECT_EQ(readFile(folder / "baseline.pfm"), readFile(folder / "best.pfm"));
+    EXPECT_EQ(baselineVersion.find("AVX2 kernels"), std::string::npos) << baselineVersion;
+#if defined(__x86_64__) && defined(__GNUC__)
+    if (__builtin_cpu_supports("avx2")) {
+        EXPECT_NE(bestVersion.find("(AVX2 kernels on this CPU)"), std::string::npos) << bestVersion;
+    }
+#endif
+}
+#endif
 
 // The summary's thread count, in the singular for one.
 TEST(CliSummary, CountsThreadsInWords) {

@@ -87,7 +87,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
                                 (corner & 4) ? box.max.z : box.min.z);
         const lancer::Vec3 towards = box.centroid() - from;
         if (!(lancer::lengthSquared(towards) > 0)) continue;
-        const lancer::Ray ray(from - towards, lancer::normalize(towards));
+        const lancer::Ray ray{from - towards, lancer::normalize(towards)};
         if (const auto crossing = mesh->cross(ray, lancer::kInfinity)) mesh->record(ray, *crossing);
         mesh->occluded(ray, lancer::kInfinity);
     }
