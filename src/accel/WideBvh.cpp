@@ -22,8 +22,10 @@ WideBvh::WideBvh(const Bounds3& bounds, std::vector<WideBvhNode> nodes, const Le
         if (!(std::isfinite(bounds.min[axis]) && std::isfinite(bounds.max[axis]) &&
               bounds.min[axis] <= bounds.max[axis]))
             throw std::invalid_argument("the tree's bounds are not a box");
-    // Children come after their node, so one pass in order knows each node's depth first.
+    // Children come after their node, so one pass in order knows each node's depth first; each
+    // node but the root is the child of one slot (a tree, which a ray walks at most once).
     std::vector<std::uint8_t> depth(nodes_.size(), 0);
+    std::vector<bool> isChild(nodes_.size(), false);
     for (std::size_t index = 0; index < nodes_.size(); ++index) {
         const WideBvhNode& node = nodes_[index];
         for (int slot = 0; slot < WideBvhNode::kWidth; ++slot) {
@@ -32,12 +34,18 @@ WideBvh::WideBvh(const Bounds3& bounds, std::vector<WideBvhNode> nodes, const Le
                 if (!leafFits(child, node.primitiveCount[slot]))
                     throw std::invalid_argument("a leaf of the tree is past the primitives");
             } else if (child == 0) {  // the root is no one's child: an unused slot
-                // Not crossed by any ray, as the build leaves it (NaN fails the test too).
-                if (!(node.bounds[0][0][slot] > node.bounds[1][0][slot]))
-                    throw std::invalid_argument("an unused slot of the tree has a box");
+                // The empty box the build leaves, which no finite ray meets (a box merely
+                // inverted may be met through rounding, and its child 0 is the root).
+                for (int axis = 0; axis < 3; ++axis)
+                    if (node.bounds[0][axis][slot] != kInfinity ||
+                        node.bounds[1][axis][slot] != -kInfinity)
+                        throw std::invalid_argument("an unused slot of the tree has a box");
             } else {
                 if (child <= index || child >= nodes_.size())
                     throw std::invalid_argument("a node of the tree is not after its parent");
+                if (isChild[child])
+                    throw std::invalid_argument("a node of the tree has two parents");
+                isChild[child] = true;
                 if (depth[index] + 1 > Bvh::kMaxDepth)
                     throw std::invalid_argument("the tree is too deep");
                 depth[child] = std::max<std::uint8_t>(depth[child], depth[index] + 1);

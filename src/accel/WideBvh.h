@@ -56,8 +56,8 @@ public:
     // A tree kept from an earlier build (the model cache), its nodes as nodes() gave them.
     // Throws std::invalid_argument when they are not a tree the traversal can walk safely: an
     // interior child not after its node or past the last, bounds that are not a finite box, a path
-    // deeper than Bvh::kMaxDepth, an unused slot whose box is not empty, or a leaf that
-    // `leafFits(first, count)` refuses.
+    // deeper than Bvh::kMaxDepth, a node that is the child of two slots, an unused slot whose box
+    // is not the empty box, or a leaf that `leafFits(first, count)` refuses.
     using LeafCheck = std::function<bool(std::uint32_t first, std::uint32_t count)>;
     WideBvh(const Bounds3& bounds, std::vector<WideBvhNode> nodes, const LeafCheck& leafFits);
 
@@ -205,6 +205,9 @@ LANCER_AVX2_TARGET void WideBvh::traverseAvx2(const Ray& ray, const float& tMax,
 template <bool kNearestFirst, typename VisitLeaf, typename PrefetchLeaf>
 void WideBvh::traverse(const Ray& ray, const float& tMax, VisitLeaf&& visitLeaf,
                        PrefetchLeaf&& prefetchLeaf) const {
+    // A ray of NaN or infinite numbers meets nothing; in the slab test it would meet every box,
+    // the unused slots' empty ones too (whose child 0 is the root: a loop).
+    if (!isFinite(ray.origin) || !isFinite(ray.direction)) return;
 #if LANCER_HAS_AVX2_TARGET
     if (CpuFeatures::avx2()) {
         traverseAvx2<kNearestFirst>(ray, tMax, visitLeaf, prefetchLeaf);

@@ -111,6 +111,25 @@ TEST_F(MeshPartsTest, IndicesPastTheirArraysAreRefused) {
 TEST_F(MeshPartsTest, TreesThatLoopOrHaveBoxesInUnusedSlotsAreRefused) {
     const int slot = interiorSlot();
     EXPECT_TRUE(refused([&](Mesh::Parts& p) { p.nodes[0].child[slot] = 0; }));  // a box, unused
+    // An unused slot's box inverted by less than rounding, which a ray meets (found by fuzzing).
+    EXPECT_TRUE(refused([](Mesh::Parts& p) {
+        for (WideBvhNode& node : p.nodes)
+            for (int unused = 0; unused < WideBvhNode::kWidth; ++unused)
+                if (node.primitiveCount[unused] == 0 && node.child[unused] == 0) {
+                    for (int axis = 0; axis < 3; ++axis) {
+                        node.bounds[0][axis][unused] = 2e-38f;
+                        node.bounds[1][axis][unused] = 1e-38f;
+                    }
+                    return;
+                }
+        FAIL() << "no unused slot in the tree";
+    }));
+    EXPECT_TRUE(refused([&](Mesh::Parts& p) {  // a node with two parents
+        for (int other = 0; other < WideBvhNode::kWidth; ++other)
+            if (other != slot && p.nodes[0].primitiveCount[other] == 0 &&
+                p.nodes[0].child[other] != 0)
+                p.nodes[0].child[other] = p.nodes[0].child[slot];
+    }));
     EXPECT_TRUE(refused([&](Mesh::Parts& p) {
         const std::uint32_t child = p.nodes[0].child[slot];
         p.nodes[child] = p.nodes[0];  // its interior children now point back before it

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <random>
@@ -103,6 +104,26 @@ TEST_F(SimdKernelTest, TheCpusKernelsAndTheBaselineAnswerAlike) {
             << "ray " << i;
     }
     EXPECT_GT(hits, 5000);
+}
+
+}  // namespace
+}  // namespace lancer::test
+
+namespace lancer::test {
+namespace {
+
+TEST_F(SimdKernelTest, RaysOfNotANumberEndWithoutAHit) {
+    const std::shared_ptr<const Mesh> mesh = bunny();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (const bool baseline : {true, false}) {
+        CpuFeatures::useBaselineOnly(baseline);
+        for (const Ray& ray : {Ray{Vec3(nan, 0, 0), Vec3(0, 0, 1)},
+                               Ray{Vec3(0, 0, 0), Vec3(nan, nan, nan)},
+                               Ray{Vec3(nan, nan, nan), Vec3(0, 1, 0)}}) {
+            EXPECT_FALSE(mesh->cross(ray, kInfinity).has_value());
+            EXPECT_FALSE(mesh->occluded(ray, kInfinity));
+        }
+    }
 }
 
 }  // namespace
