@@ -206,8 +206,10 @@ template <bool kNearestFirst, typename VisitLeaf, typename PrefetchLeaf>
 void WideBvh::traverse(const Ray& ray, const float& tMax, VisitLeaf&& visitLeaf,
                        PrefetchLeaf&& prefetchLeaf) const {
     // A ray of NaN or infinite numbers meets nothing; in the slab test it would meet every box,
-    // the unused slots' empty ones too (whose child 0 is the root: a loop).
-    if (!isFinite(ray.origin) || !isFinite(ray.direction)) return;
+    // the unused slots' empty ones too (whose child 0 is the root: a loop). x * 0 is 0 for a
+    // finite x and NaN otherwise: one branch for the six numbers.
+    const Vec3 o = ray.origin * 0.0f, d = ray.direction * 0.0f;
+    if ((o.x + o.y) + (o.z + d.x) + (d.y + d.z) != 0) return;
 #if LANCER_HAS_AVX2_TARGET
     if (CpuFeatures::avx2()) {
         traverseAvx2<kNearestFirst>(ray, tMax, visitLeaf, prefetchLeaf);
