@@ -1,5 +1,6 @@
 #include "io/ModelCache.h"
 
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cstdio>
@@ -23,6 +24,8 @@ namespace {
 
 constexpr char kMagic[16] = {'l', 'a', 'n', 'c', 'e', 'r', ' ',  'm',
                              'o', 'd', 'e', 'l', ' ', '1', '\n', '\0'};
+
+constexpr const char* kEntryExtension = ".obj-model";
 
 // An entry that cannot be used, for a reason worth a warning.
 struct DamagedEntry {
@@ -105,10 +108,12 @@ std::uint64_t librariesFingerprint(const fs::path& objPath, const ObjCompletion&
 
 }  // namespace
 
-ModelCache::ModelCache(fs::path folder, std::string programIdentity, std::uintmax_t minimumBytes)
+ModelCache::ModelCache(fs::path folder, std::string programIdentity, std::uintmax_t minimumBytes,
+                       std::uintmax_t maximumBytes)
     : folder_(std::move(folder)),
       programIdentity_(std::move(programIdentity)),
-      minimumBytes_(minimumBytes) {}
+      minimumBytes_(minimumBytes),
+      maximumBytes_(maximumBytes) {}
 
 std::optional<fs::path> ModelCache::defaultFolder() {
     const auto variable = [](const char* name) -> std::optional<fs::path> {
@@ -137,7 +142,7 @@ fs::path ModelCache::entryPath(const fs::path& modelPath,
                                    .value();
     char hex[17];
     std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(name));
-    return folder_ / (std::string(hex) + ".obj-model");
+    return folder_ / (std::string(hex) + kEntryExtension);
 }
 
 std::uint64_t ModelCache::modelFingerprint(const fs::path& modelPath,
@@ -211,6 +216,30 @@ std::shared_ptr<const Mesh> ModelCache::findObj(const fs::path& objPath,
     return nullptr;
 }
 
+void ModelCache::makeRoomBeside(const fs::path& newest) const {
+    struct Entry {
+        fs::file_time_type written;
+        std::uintmax_t bytes;
+        fs::path path;
+    };
+    std::vector<Entry> others;
+    std::error_code error;
+    std::uintmax_t total = fs::file_size(newest, error);
+    for (const fs::directory_entry& file : fs::directory_iterator(folder_, error)) {
+        if (file.path().extension() != kEntryExtension || file.path() == newest) continue;
+        Entry entry{file.last_write_time(error), file.file_size(error), file.path()};
+        if (error) continue;  // gone meanwhile (another process made room too)
+        total += entry.bytes;
+        others.push_back(std::move(entry));
+    }
+    std::sort(others.begin(), others.end(),
+              [](const Entry& a, const Entry& b) { return a.written < b.written; });
+    for (const Entry& oldest : others) {
+        if (total <= maximumBytes_) break;
+        if (fs::remove(oldest.path, error)) total -= oldest.bytes;
+    }
+}
+
 void ModelCache::storeObj(const fs::path& objPath, const std::optional<float>& smooth,
                           const ObjCompletion& completion, const Mesh& mesh,
                           std::vector<std::string>& warnings) const {
@@ -238,6 +267,7 @@ void ModelCache::storeObj(const fs::path& objPath, const std::optional<float>& s
         std::error_code error;
         fs::create_directories(folder_, error);
         AtomicFile::write(entry, bytes.data(), bytes.size(), "model cache entry");
+        makeRoomBeside(entry);
     } catch (const std::runtime_error& e) {
         warn(warnings, objPath,
              std::string("not kept in the model cache: ") + e.what() +

@@ -25,15 +25,19 @@ class Mesh;
 // kept anew. An entry that cannot be used (damaged, or of another build) is never an error: the
 // model is read from its file, with a warning when the entry was damaged.
 //
-// OBJ models only (their text parse is most of their load), of at least `minimumBytes`.
+// OBJ models only (their text parse is most of their load), of at least `minimumBytes`. The
+// folder's entries are kept under `maximumBytes` in all: once an entry written takes them past
+// it, the entries written longest ago are deleted.
 class ModelCache {
 public:
     static constexpr std::uintmax_t kDefaultMinimumBytes = std::uintmax_t{8} << 20;
+    static constexpr std::uintmax_t kDefaultMaximumBytes = std::uintmax_t{4} << 30;
 
     // `programIdentity`: what tells this build's entries from another's (the mesh's layout and
     // tree may differ between builds).
     ModelCache(std::filesystem::path folder, std::string programIdentity,
-               std::uintmax_t minimumBytes = kDefaultMinimumBytes);
+               std::uintmax_t minimumBytes = kDefaultMinimumBytes,
+               std::uintmax_t maximumBytes = kDefaultMaximumBytes);
 
     // The user's cache folder for models: $XDG_CACHE_HOME/lancer/models, else
     // ~/.cache/lancer/models ($HOME), else %LOCALAPPDATA%\lancer\models; nothing when none is set.
@@ -57,6 +61,9 @@ public:
 
 private:
     bool keeps(const std::filesystem::path& modelPath) const;
+    // Deletes the entries written longest ago, but not `newest`, until the rest fit in
+    // maximumBytes.
+    void makeRoomBeside(const std::filesystem::path& newest) const;
     std::filesystem::path entryPath(const std::filesystem::path& modelPath,
                                     const std::optional<float>& smooth) const;
     // What the entry of a model must have been made from, besides its MTL files.
@@ -66,6 +73,7 @@ private:
     std::filesystem::path folder_;
     std::string programIdentity_;
     std::uintmax_t minimumBytes_;
+    std::uintmax_t maximumBytes_;
 };
 
 }  // namespace lancer

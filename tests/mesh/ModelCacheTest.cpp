@@ -2,6 +2,8 @@
 // materials, warnings and MTL files; an entry out of date (the OBJ, an MTL file, the smoothing,
 // the program changed) is not used; a damaged entry is refused with a warning, never trusted.
 
+#include <algorithm>
+#include <chrono>
 #include <cstring>
 #include <fstream>
 
@@ -170,6 +172,49 @@ TEST_F(ModelCacheTest, SmallModelsAreNotKept) {
     build(&models);
     EXPECT_TRUE(entries().empty());
     EXPECT_EQ(find(models), nullptr);
+}
+
+TEST_F(ModelCacheTest, TheEntriesWrittenLongestAgoMakeRoomForANewOne) {
+    // Three models whose entries have the same size: the same file under three names of the
+    // same length (the warnings kept name it), written in turn.
+    for (const char* name : {"a.obj", "b.obj", "c.obj"})
+        fs::copy_file(obj_, folder_.path() / name);
+    obj_ = folder_.path() / "a.obj";
+    const ModelCache unbounded = cache();
+    build(&unbounded);
+    const std::uintmax_t entryBytes = fs::file_size(entries().front());
+    fs::remove(entries().front());
+    // Room for two entries, less a byte.
+    const ModelCache models(folder_.path() / "cache", "test build", 0, 2 * entryBytes - 1);
+    std::vector<fs::path> kept;
+    for (const char* name : {"a.obj", "b.obj", "c.obj"}) {
+        obj_ = folder_.path() / name;
+        build(&models);
+        kept = entries();
+        ASSERT_EQ(kept.size(), 1u) << name;  // the one just written, never deleted
+        ASSERT_NE(find(models), nullptr) << name;
+    }
+    // Room for two: the oldest goes, the two newest stay. Each entry is dated an hour after the
+    // one before (a file system's clock may give entries written in a row the same time).
+    fs::remove_all(folder_.path() / "cache");
+    const ModelCache roomier(folder_.path() / "cache", "test build", 0, 2 * entryBytes);
+    const fs::file_time_type start = fs::file_time_type::clock::now() - std::chrono::hours(10);
+    int hour = 0;
+    for (const char* name : {"a.obj", "b.obj", "c.obj"}) {
+        const std::vector<fs::path> before = entries();
+        obj_ = folder_.path() / name;
+        build(&roomier);
+        for (const fs::path& entry : entries())
+            if (std::find(before.begin(), before.end(), entry) == before.end())
+                fs::last_write_time(entry, start + std::chrono::hours(hour++));
+    }
+    EXPECT_EQ(entries().size(), 2u);
+    obj_ = folder_.path() / "a.obj";
+    EXPECT_EQ(find(roomier), nullptr);
+    for (const char* name : {"b.obj", "c.obj"}) {
+        obj_ = folder_.path() / name;
+        EXPECT_NE(find(roomier), nullptr) << name;
+    }
 }
 
 TEST_F(ModelCacheTest, ATruncatedEntryIsRefusedWithAWarning) {
