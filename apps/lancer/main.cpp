@@ -256,8 +256,13 @@ void printStatistics(const Scene& scene, const RenderCounters& counters) {
         std::fprintf(
             stderr, "stats: meshes and their BVHs: %.2f MB, %.1f bytes per stored triangle\n",
             megabytes, static_cast<double>(s.meshBytes) / static_cast<double>(s.uniqueTriangles));
-    std::fprintf(stderr, "stats: scene loaded in %.3f s (%.3f s of it building BVHs)\n",
-                 s.loadSeconds, s.buildSeconds);
+    const std::string cached = s.cachedModels == 0
+                                   ? ""
+                                   : "; " + std::to_string(s.cachedModels) +
+                                         (s.cachedModels == 1 ? " model" : " models") +
+                                         " taken from the model cache";
+    std::fprintf(stderr, "stats: scene loaded in %.3f s (%.3f s of it building BVHs%s)\n",
+                 s.loadSeconds, s.buildSeconds, cached.c_str());
     std::fprintf(stderr, "stats: %llu rays, %llu samples, %llu of them NaN or infinite (dropped)\n",
                  static_cast<unsigned long long>(counters.rays),
                  static_cast<unsigned long long>(counters.samples),

@@ -982,7 +982,9 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadMeshObject(
         std::shared_ptr<const Mesh> mesh;
         if (modelCache_)
             mesh = modelCache_->findObj(path, smooth, loadTexture, warnings_, materialFiles);
-        if (!mesh) {
+        if (mesh) {
+            ++scene_.statistics().cachedModels;
+        } else {
             ObjLoader::Geometry geometry = ObjLoader::readGeometry(path);
             geometry.triangles->materials = ObjLoader::complete(
                 path, geometry.completion, loadTexture, warnings_, &materialFiles);

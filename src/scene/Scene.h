@@ -33,6 +33,7 @@ public:
         std::size_t meshBytes = 0;           // the models' vertex, index and BVH arrays
         double loadSeconds = 0;              // reading files and building BVHs
         double buildSeconds = 0;             // of which building BVHs (models' and the scene's)
+        std::size_t cachedModels = 0;        // models taken from the model cache, not built
     };
 
     Scene();

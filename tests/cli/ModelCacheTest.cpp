@@ -49,9 +49,15 @@ TEST_F(CliModelCache, TheSecondRenderTakesTheModelFromTheCacheForTheSameImage) {
     const fs::path entry = folder_ / "cache" / folder_.entries("cache").front();
     const fs::file_time_type longAgo = fs::last_write_time(entry) - std::chrono::hours(24);
     fs::last_write_time(entry, longAgo);
-    const RunResult second = render("second.pfm", cached_);
+    std::vector<std::string> withStats = cached_;
+    withStats.push_back("--stats");
+    const RunResult second = render("second.pfm", withStats);
     ASSERT_EQ(second.exitStatus, 0) << second;
     EXPECT_EQ(fs::last_write_time(entry), longAgo);  // read, not written
+    EXPECT_NE(
+        second.standardError.find("s of it building BVHs; 1 model taken from the model cache)"),
+        std::string::npos)
+        << second;
     const RunResult uncached = render("uncached.pfm", {"--no-model-cache"});
     ASSERT_EQ(uncached.exitStatus, 0) << uncached;
 
