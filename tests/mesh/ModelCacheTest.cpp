@@ -19,7 +19,9 @@ namespace fs = std::filesystem;
 
 template <typename T>
 bool sameBytes(std::span<const T> a, std::span<const T> b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size_bytes()) == 0;
+    // (memcmp must not be given the null data of an empty array, even for no bytes.)
+    return a.size() == b.size() &&
+           (a.empty() || std::memcmp(a.data(), b.data(), a.size_bytes()) == 0);
 }
 
 class ModelCacheTest : public ::testing::Test {
