@@ -70,6 +70,27 @@ TEST_F(CliModelCache, TheSecondRenderTakesTheModelFromTheCacheForTheSameImage) {
     EXPECT_EQ(second.errorLines().front(), first.errorLines().front());
 }
 
+TEST_F(CliModelCache, AnAnimationReadsTheModelOnceForAllItsFrames) {
+    json scene = json::parse(readFile(folder_ / "scene.json"));
+    scene["animation"] = {
+        {"frames", 3},
+        {"camera",
+         {{{"frame", 1}, {"position", {0.5, -2, 3}}}, {{"frame", 3}, {"position", {1, -2, 3}}}}}};
+    folder_.write("animated.json", scene.dump());
+    std::vector<std::string> arguments{"animated.json", "-o", "frame.pfm", "--stats"};
+    arguments.insert(arguments.end(), cached_.begin(), cached_.end());
+    const RunResult run = runLancer(arguments, folder_.path());
+    ASSERT_EQ(run.exitStatus, 0) << run;
+    std::size_t fromCache = 0;
+    for (std::size_t at = 0; (at = run.standardError.find("1 model taken from the model cache",
+                                                          at)) != std::string::npos;
+         ++at)
+        ++fromCache;
+    EXPECT_EQ(fromCache, 2u) << run;  // frames 2 and 3
+    for (const char* frame : {"frame-0001.pfm", "frame-0002.pfm", "frame-0003.pfm"})
+        EXPECT_TRUE(fs::exists(folder_ / frame)) << frame;
+}
+
 TEST_F(CliModelCache, NoModelCacheKeepsNothing) {
     const RunResult run = render("out.pfm", {"--no-model-cache"});
     ASSERT_EQ(run.exitStatus, 0) << run;
