@@ -1,5 +1,6 @@
 #pragma once
 
+#include <span>
 #include <vector>
 
 #include "math/Vec3.h"
@@ -8,7 +9,7 @@ namespace lancer {
 
 // The part of a convex polygon where dot(normal, x) >= offset (one Sutherland-Hodgman step): clips
 // infinite planes to the scene's box.
-inline std::vector<Vec3d> clipPolygon(const std::vector<Vec3d>& polygon, const Vec3d& normal,
+inline std::vector<Vec3d> clipPolygon(std::span<const Vec3d> polygon, const Vec3d& normal,
                                       double offset) {
     std::vector<Vec3d> clipped;
     const std::size_t n = polygon.size();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <span>
 #include <utility>
 
@@ -48,15 +49,13 @@ std::vector<Vec3d> withoutRepeats(std::vector<Vec3d> polygon) {
     return kept;
 }
 
-// The segments where a facet meets the plane through p0 of unit normal n: its edges, if it lies
-// in the plane; else the part of it within `tolerance` of the plane, if that is a segment (an
-// edge lying in the plane, or the facet's section by the plane when it crosses it).
-struct Segments {
-    std::array<std::array<Vec3d, 2>, 3> list;
-    int count = 0;
-};
-Segments segmentsInPlane(const std::array<Vec3, 3>& facet, const Vec3d& p0, const Vec3d& n,
-                         double tolerance) {
+// Calls visit(a, b) for the segments ab where a facet meets the plane through p0 of unit normal n:
+// its edges, if it lies in the plane; else the part of it within `tolerance` of the plane, if that
+// is a segment (an edge lying in the plane, or the facet's section by the plane when it crosses
+// it).
+template <typename Visit>
+void forEachSegmentInPlane(const std::array<Vec3, 3>& facet, const Vec3d& p0, const Vec3d& n,
+                           double tolerance, Visit&& visit) {
     std::array<Vec3d, 3> corners;
     std::array<double, 3> height;
     for (int k = 0; k < 3; ++k) {
@@ -64,9 +63,11 @@ Segments segmentsInPlane(const std::array<Vec3, 3>& facet, const Vec3d& p0, cons
         height[k] = dot(corners[k] - p0, n);
     }
     const auto inPlane = [&](int k) { return std::abs(height[k]) <= tolerance; };
-    if (inPlane(0) && inPlane(1) && inPlane(2))
-        return {{{{corners[0], corners[1]}, {corners[1], corners[2]}, {corners[2], corners[0]}}},
-                3};
+    if (inPlane(0) && inPlane(1) && inPlane(2)) {
+        for (int k = 0; k < 3; ++k)
+            visit(corners[k], corners[(k + 1) % 3]);
+        return;
+    }
     // Corners in the plane and crossings of edges from one side to the other: two make a segment.
     std::array<Vec3d, 3> points;
     int found = 0;
@@ -77,37 +78,61 @@ Segments segmentsInPlane(const std::array<Vec3, 3>& facet, const Vec3d& p0, cons
             points[found++] = corners[k] + (height[k] / (height[k] - height[next])) *
                                                (corners[next] - corners[k]);
     }
-    if (found != 2) return {};
-    return {{{{points[0], points[1]}}}, 1};
+    if (found == 2) visit(points[0], points[1]);
 }
 
-// Splits the pieces that the segment ab crosses along its line; whether it split any. Only those
-// pieces: the line stops where the pieces the segment crosses do.
-bool cutAlong(std::vector<std::vector<Vec3d>>& pieces, const Vec3d& n, const Vec3d& a,
-              const Vec3d& b, double tolerance) {
-    // The segment's line in the plane, as the plane through it perpendicular to the triangle.
+// The parts of a convex polygon on either side of a line.
+using Sides = std::array<std::vector<Vec3d>, 2>;
+
+// The parts of a convex polygon (counter-clockwise about n) on either side of the line of the
+// segment ab: nothing if the segment is no longer than the tolerance in the plane, or the line
+// leaves one side empty.
+std::optional<Sides> sidesOfLine(std::span<const Vec3d> polygon, const Vec3d& n, const Vec3d& a,
+                                 const Vec3d& b, double tolerance) {
+    // The segment's line in the plane, as the plane through it perpendicular to the polygon.
     const Vec3d across = cross(n, b - a);
     const double acrossLength = length(across);
-    if (!(acrossLength > tolerance)) return false;
+    if (!(acrossLength > tolerance)) return std::nullopt;
     const Vec3d side = across / acrossLength;
     const double offset = dot(side, a);
-    bool split = false;
+    std::vector<Vec3d> left = withoutRepeats(clipPolygon(polygon, side, offset));
+    std::vector<Vec3d> right = withoutRepeats(clipPolygon(polygon, -side, -offset));
+    if (left.size() < 3 || right.size() < 3) return std::nullopt;
+    return Sides{std::move(left), std::move(right)};
+}
+
+// The parts of a convex polygon on either side of the line of the segment ab: nothing when the
+// segment does not cross its interior, which a cut along it then leaves whole. (Apart from
+// sidesOfLine so that the usual answer, no crossing, is found inline.)
+std::optional<Sides> splitAlong(std::span<const Vec3d> polygon, const Vec3d& n, const Vec3d& a,
+                                const Vec3d& b, double tolerance) {
+    if (!crossesInterior(polygon, n, a, b, tolerance)) return std::nullopt;
+    return sidesOfLine(polygon, n, a, b, tolerance);
+}
+
+// Splits the pieces that the segment ab crosses along its line. Only those pieces: the line stops
+// where the pieces the segment crosses do.
+void cutAlong(std::vector<std::vector<Vec3d>>& pieces, const Vec3d& n, const Vec3d& a,
+              const Vec3d& b, double tolerance) {
     std::vector<std::vector<Vec3d>> next;
     for (std::vector<Vec3d>& polygon : pieces) {
-        if (crossesInterior(polygon, n, a, b, tolerance)) {
-            std::vector<Vec3d> left = withoutRepeats(clipPolygon(polygon, side, offset));
-            std::vector<Vec3d> right = withoutRepeats(clipPolygon(polygon, -side, -offset));
-            if (left.size() >= 3 && right.size() >= 3) {
-                next.push_back(std::move(left));
-                next.push_back(std::move(right));
-                split = true;
-                continue;
-            }
+        if (auto sides = splitAlong(polygon, n, a, b, tolerance)) {
+            next.push_back(std::move((*sides)[0]));
+            next.push_back(std::move((*sides)[1]));
+        } else {
+            next.push_back(std::move(polygon));
         }
-        next.push_back(std::move(polygon));
     }
     pieces = std::move(next);
-    return split;
+}
+
+// Whether a segment ab of a facet reaching `facetReach` makes `reach`, the largest reach of the
+// facets found to cut the polygon so far (nothing before the first), larger: it cuts the polygon
+// and its facet reaches further.
+bool reachesFurther(const std::optional<float>& reach, float facetReach,
+                    std::span<const Vec3d> polygon, const Vec3d& n, const Vec3d& a, const Vec3d& b,
+                    double tolerance) {
+    return (!reach || facetReach > *reach) && splitAlong(polygon, n, a, b, tolerance);
 }
 
 }  // namespace
@@ -173,28 +198,43 @@ std::vector<std::uint32_t> ContactCutter::facetsNear(const Bounds3& box) const {
     return near;
 }
 
-ContactCutter::Pieces ContactCutter::cut(std::span<const Vec3d> polygon,
-                                         const Vec3d& normal) const {
+template <typename Visit>
+void ContactCutter::forEachSegmentInPlaneOf(std::span<const Vec3d> polygon, const Vec3d& normal,
+                                            Visit&& visit) const {
     Bounds3 box;
     for (const Vec3d& p : polygon)
         box = merge(box, Vec3(p));
-    const double tolerance = tolerance_;
-    Pieces pieces;  // no polygons until a segment crosses the polygon: most never are
-    for (const std::uint32_t i : facetsNear(box)) {
-        const Segments segments =
-            segmentsInPlane(facets_[i].corners, polygon[0], normal, tolerance);
-        for (int k = 0; k < segments.count; ++k) {
-            const auto& [a, b] = segments.list[k];
-            if (pieces.polygons.empty()) {
-                if (!crossesInterior(polygon, normal, a, b, tolerance)) continue;
-                pieces.polygons = {std::vector<Vec3d>(polygon.begin(), polygon.end())};
-            }
-            if (cutAlong(pieces.polygons, normal, a, b, tolerance))
-                pieces.reach = std::max(pieces.reach, facets_[i].reach);
-        }
-    }
-    if (pieces.polygons.size() <= 1) return {};
-    return pieces;
+    for (const std::uint32_t i : facetsNear(box))
+        forEachSegmentInPlane(
+            facets_[i].corners, polygon[0], normal, tolerance_,
+            [&](const Vec3d& a, const Vec3d& b) { visit(a, b, facets_[i].reach); });
+}
+
+std::optional<float> ContactCutter::cuttingReach(std::span<const Vec3d> polygon,
+                                                 const Vec3d& normal) const {
+    std::optional<float> reach;
+    forEachSegmentInPlaneOf(polygon, normal, [&](const Vec3d& a, const Vec3d& b, float facetReach) {
+        if (reachesFurther(reach, facetReach, polygon, normal, a, b, tolerance_))
+            reach = facetReach;
+    });
+    return reach;
+}
+
+ContactCutter::Pieces ContactCutter::cut(std::span<const Vec3d> polygon,
+                                         const Vec3d& normal) const {
+    std::optional<float> reach;
+    // No pieces until a segment cuts the polygon (most never are); it is whole until then, so
+    // that segment splits it: there are at least two pieces.
+    std::vector<std::vector<Vec3d>> pieces;
+    forEachSegmentInPlaneOf(polygon, normal, [&](const Vec3d& a, const Vec3d& b, float facetReach) {
+        if (reachesFurther(reach, facetReach, polygon, normal, a, b, tolerance_))
+            reach = facetReach;
+        if (!reach) return;
+        if (pieces.empty()) pieces = {std::vector<Vec3d>(polygon.begin(), polygon.end())};
+        cutAlong(pieces, normal, a, b, tolerance_);
+    });
+    if (!reach) return {};
+    return {std::move(pieces), *reach};
 }
 
 }  // namespace lancer

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -17,7 +18,8 @@ namespace lancer {
 // element's form factors add up to more than one. The cutter keeps every facet of the scene in a
 // uniform grid, finds the segments where they meet a polygon's plane (their edges lying in it,
 // or their sections by it) that cross its interior, and splits the polygon along them into
-// convex pieces, each wholly inside or wholly outside the footprint.
+// convex pieces, each wholly inside or wholly outside the footprint. Whether a polygon is cut at
+// all, and how far the cutting shapes reach, is found without making the pieces.
 class ContactCutter {
 public:
     // A facet, with the size of the shape it belongs to (how far above the surface the shape's
@@ -27,7 +29,8 @@ public:
         float reach;
     };
     // Convex pieces of a polygon, counter-clockwise like it; `reach` is the largest of the
-    // reaches of the facets that cut the polygon.
+    // reaches of the facets that cut the polygon (a segment of theirs crosses its interior: all
+    // the facets along one line count, not only the first to cut along it).
     struct Pieces {
         std::vector<std::vector<Vec3d>> polygons;
         float reach = 0;
@@ -40,8 +43,16 @@ public:
     // A convex polygon (counter-clockwise about its unit normal) cut along the segments where the
     // facets meet its plane, those that cross its interior: no polygons when none does.
     Pieces cut(std::span<const Vec3d> polygon, const Vec3d& normal) const;
+    // The largest reach of the facets that cut the polygon, as `cut` gives it but without making
+    // the pieces: nothing where `cut` gives no polygons.
+    std::optional<float> cuttingReach(std::span<const Vec3d> polygon, const Vec3d& normal) const;
 
 private:
+    // Calls visit(a, b, reach) for each segment ab where a facet near a polygon meets its plane,
+    // with the facet's reach.
+    template <typename Visit>
+    void forEachSegmentInPlaneOf(std::span<const Vec3d> polygon, const Vec3d& normal,
+                                 Visit&& visit) const;
     // The facets whose boxes may overlap `box`, each once, in increasing order.
     std::vector<std::uint32_t> facetsNear(const Bounds3& box) const;
     // The grid cell holding p along each axis, clamped to the grid.

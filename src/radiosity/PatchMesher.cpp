@@ -92,10 +92,10 @@ void PatchMesher::addShape(RadiosityMesh& mesh, const Shape& shape,
         const Vec3 normal = normalize(cross(c[1] - c[0], c[2] - c[0]));
         const std::array<Vec3d, 3> triangle{Vec3d(c[0]), Vec3d(c[1]), Vec3d(c[2])};
         // Chords of a curved surface are not where anything stands: they are not cut.
-        const ContactCutter::Pieces pieces = tessellation.curved || !isFinite(normal)
-                                                 ? ContactCutter::Pieces{}
-                                                 : cutter.cut(triangle, Vec3d(normal));
-        if (pieces.polygons.empty()) {
+        std::optional<float> reach;
+        if (!tessellation.curved && isFinite(normal))
+            reach = cutter.cuttingReach(triangle, Vec3d(normal));
+        if (!reach) {
             addSurfaceTriangle(mesh, facet.corners, source);
             continue;
         }
@@ -107,7 +107,7 @@ void PatchMesher::addShape(RadiosityMesh& mesh, const Shape& shape,
             ContactCutter::Pieces parts = cutter.cut(cell, Vec3d(normal));
             if (parts.polygons.empty()) parts.polygons = {cell};
             for (const std::vector<Vec3d>& part : parts.polygons) {
-                if (isEnclosed(part, normal, pieces.reach)) continue;
+                if (isEnclosed(part, normal, *reach)) continue;
                 // A fan: the part is convex. Its triangles thinner than the tolerance are
                 // rounding (a cell cut through its corner), not surface.
                 for (std::size_t k = 1; k + 1 < part.size(); ++k) {

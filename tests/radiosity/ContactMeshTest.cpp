@@ -5,7 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -151,6 +153,79 @@ TEST(ContactMeshTest, AFacetStandingOnATriangleOrSunkInItCutsItAlongTheLine) {
         ASSERT_EQ(pieces.polygons.size(), 2u);
         EXPECT_EQ(pieces.reach, 2);
         EXPECT_NEAR(area(pieces.polygons[0]) + area(pieces.polygons[1]), 0.5, 1e-7);
+    }
+}
+
+// The twelve facets of the box [lo, hi], with the box's size as their reach.
+std::vector<ContactCutter::Facet> boxFacets(const Vec3& lo, const Vec3& hi) {
+    const auto corner = [&](int i) {
+        return Vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+    };
+    // Each face's corners in order around it, as indices into the box's corners.
+    const std::array<std::array<int, 4>, 6> faces{
+        {{0, 1, 3, 2}, {4, 5, 7, 6}, {0, 1, 5, 4}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 3, 7, 5}}};
+    std::vector<ContactCutter::Facet> facets;
+    for (const auto& [a, b, c, d] : faces) {
+        facets.push_back({{corner(a), corner(b), corner(c)}, length(hi - lo)});
+        facets.push_back({{corner(a), corner(c), corner(d)}, length(hi - lo)});
+    }
+    return facets;
+}
+
+TEST(ContactCutterTest, CuttingReachIsWhatCutFindsWithoutThePieces) {
+    // A 2 x 2 floor facing +y, as a square, its two triangles and its four quarters.
+    const std::vector<Vec3d> square{Vec3d(-1, 0, 1), Vec3d(1, 0, 1), Vec3d(1, 0, -1),
+                                    Vec3d(-1, 0, -1)};
+    const std::vector<std::vector<Vec3d>> polygons{
+        square,
+        {square[0], square[1], square[2]},
+        {square[0], square[2], square[3]},
+        {Vec3d(-1, 0, 1), Vec3d(0, 0, 1), Vec3d(0, 0, 0), Vec3d(-1, 0, 0)},
+        {Vec3d(0, 0, 1), Vec3d(1, 0, 1), Vec3d(1, 0, 0), Vec3d(0, 0, 0)},
+        {Vec3d(0, 0, 0), Vec3d(1, 0, 0), Vec3d(1, 0, -1), Vec3d(0, 0, -1)},
+        {Vec3d(-1, 0, 0), Vec3d(0, 0, 0), Vec3d(0, 0, -1), Vec3d(-1, 0, -1)}};
+    const auto join = [](std::vector<ContactCutter::Facet> a,
+                         const std::vector<ContactCutter::Facet>& b) {
+        a.insert(a.end(), b.begin(), b.end());
+        return a;
+    };
+    const Vec3 blockLo(-0.3f, 0, -0.2f), blockHi(0.4f, 0.5f, 0.3f);
+    const Vec3 sunkLo(-0.3f, -0.05f, -0.2f);
+    const Vec3 tallLo(-0.8f, 0, 0.5f), tallHi(-0.6f, 2, 0.7f);
+    const std::vector<ContactCutter::Facet> block = boxFacets(blockLo, blockHi);
+    // Two panels standing along the line z = 0.5: the tall one counts though the small one's
+    // cut already runs along its base.
+    const ContactCutter::Facet smallPanel{
+        {Vec3(-0.5f, 0, 0.5f), Vec3(-0.4f, 0, 0.5f), Vec3(-0.45f, 0.2f, 0.5f)}, 0.3f};
+    const ContactCutter::Facet tallPanel{
+        {Vec3(0.3f, 0, 0.5f), Vec3(0.4f, 0, 0.5f), Vec3(0.35f, 1.5f, 0.5f)}, 2};
+    struct Configuration {
+        const char* name;
+        std::vector<ContactCutter::Facet> facets;
+        std::optional<float> reach;  // the square's
+    };
+    const std::vector<Configuration> configurations{
+        {"a block standing on the floor", block, length(blockHi - blockLo)},
+        {"a block sunk into it", boxFacets(sunkLo, blockHi), length(blockHi - sunkLo)},
+        {"two blocks: the larger reach", join(block, boxFacets(tallLo, tallHi)),
+         length(tallHi - tallLo)},
+        {"two panels along one line, the small one first", {smallPanel, tallPanel}, 2},
+        {"two panels along one line, the tall one first", {tallPanel, smallPanel}, 2},
+        {"a block floating above it", boxFacets(blockLo + Vec3(0, 0.1f, 0), blockHi), {}},
+        {"a block beside it along its side",
+         boxFacets(Vec3(1, 0, -0.5f), Vec3(1.5f, 0.5f, 0.5f)),
+         {}},
+        {"a block touching its corner", boxFacets(Vec3(1, 0, 1), Vec3(1.3f, 0.3f, 1.3f)), {}}};
+    for (const Configuration& configuration : configurations) {
+        SCOPED_TRACE(configuration.name);
+        const ContactCutter cutter(configuration.facets, 1e-4f);
+        for (std::size_t i = 0; i < polygons.size(); ++i) {
+            SCOPED_TRACE("polygon " + std::to_string(i));
+            const ContactCutter::Pieces pieces = cutter.cut(polygons[i], kUp);
+            EXPECT_EQ(cutter.cuttingReach(polygons[i], kUp),
+                      pieces.polygons.empty() ? std::nullopt : std::optional(pieces.reach));
+        }
+        EXPECT_EQ(cutter.cuttingReach(square, kUp), configuration.reach);
     }
 }
 
