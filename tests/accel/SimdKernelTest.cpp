@@ -117,9 +117,9 @@ TEST_F(SimdKernelTest, RaysOfNotANumberEndWithoutAHit) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     for (const bool baseline : {true, false}) {
         CpuFeatures::useBaselineOnly(baseline);
-        for (const Ray& ray : {Ray{Vec3(nan, 0, 0), Vec3(0, 0, 1)},
-                               Ray{Vec3(0, 0, 0), Vec3(nan, nan, nan)},
-                               Ray{Vec3(nan, nan, nan), Vec3(0, 1, 0)}}) {
+        for (const Ray& ray :
+             {Ray{Vec3(nan, 0, 0), Vec3(0, 0, 1)}, Ray{Vec3(0, 0, 0), Vec3(nan, nan, nan)},
+              Ray{Vec3(nan, nan, nan), Vec3(0, 1, 0)}}) {
             EXPECT_FALSE(mesh->cross(ray, kInfinity).has_value());
             EXPECT_FALSE(mesh->occluded(ray, kInfinity));
         }
