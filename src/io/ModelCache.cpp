@@ -18,6 +18,7 @@
 #include "io/AtomicFile.h"
 #include "io/Fingerprint.h"
 #include "io/ObjSupport.h"
+#include "util/ByteAppend.h"
 
 namespace lancer {
 
@@ -36,18 +37,13 @@ struct DamagedEntry {
 };
 
 template <typename T>
-void append(std::string& bytes, const T& value) {
-    bytes.append(reinterpret_cast<const char*>(&value), sizeof(T));
-}
-
-template <typename T>
 void appendArray(std::string& bytes, std::span<const T> values) {
-    append(bytes, std::uint64_t{values.size()});
+    appendBytes(bytes, std::uint64_t{values.size()});
     bytes.append(reinterpret_cast<const char*>(values.data()), values.size_bytes());
 }
 
 void appendTexts(std::string& bytes, const std::vector<std::string>& texts) {
-    append(bytes, std::uint64_t{texts.size()});
+    appendBytes(bytes, std::uint64_t{texts.size()});
     for (const std::string& text : texts)
         appendArray(bytes, std::span<const char>(text));
 }
@@ -251,9 +247,9 @@ void ModelCache::storeObj(const fs::path& objPath, const std::optional<float>& s
     std::string bytes(kMagic, sizeof kMagic);
     // The arrays' bytes, with room for the rest: the entry is built in place, never moved.
     bytes.reserve(mesh.memoryBytes() + (std::size_t{1} << 16));
-    append(bytes, modelFingerprint(objPath, smooth));
+    appendBytes(bytes, modelFingerprint(objPath, smooth));
     appendTexts(bytes, completion.libraryNames);
-    append(bytes, librariesFingerprint(objPath, completion));
+    appendBytes(bytes, librariesFingerprint(objPath, completion));
     appendArray(bytes, std::span<const int>(completion.materialSources));
     appendTexts(bytes, completion.warningsBeforeMaterials);
     appendTexts(bytes, completion.warningsAfterMaterials);
@@ -262,7 +258,7 @@ void ModelCache::storeObj(const fs::path& objPath, const std::optional<float>& s
     appendArray(bytes, std::span<const Vec2>(triangles.uvs));
     appendArray(bytes, std::span<const std::uint32_t>(triangles.indices));
     appendArray(bytes, std::span<const std::uint32_t>(triangles.faceMaterials));
-    append(bytes, mesh.bounds());
+    appendBytes(bytes, mesh.bounds());
     appendArray(bytes, mesh.bvhNodes());
     appendArray(bytes, mesh.packs());
     const fs::path entry = entryPath(objPath, smooth);

@@ -10,6 +10,7 @@
 #include "io/InputFile.h"
 #include "render/Renderer.h"
 #include "scene/InputError.h"
+#include "util/ByteAppend.h"
 #include "util/ByteReader.h"
 
 namespace lancer {
@@ -28,11 +29,6 @@ struct Header {
     std::uint64_t rays, samples, pixels, nonFiniteSamples;
 };
 static_assert(sizeof(Header) == 72, "no padding: every byte of the file is checksummed");
-
-template <typename T>
-void append(std::string& bytes, const T& value) {
-    bytes.append(reinterpret_cast<const char*>(&value), sizeof(T));
-}
 
 std::uint64_t checksum(std::string_view bytes) {
     return Fingerprint().addText(bytes).value();
@@ -74,22 +70,22 @@ void ResumeFile::write(const std::filesystem::path& path, std::uint64_t fingerpr
                         c.pixels,
                         c.nonFiniteSamples};
     std::string bytes(kMagic, sizeof kMagic);
-    append(bytes, header);
+    appendBytes(bytes, header);
     for (const bool finished : partial.finishedTiles)
-        append(bytes, static_cast<std::uint8_t>(finished));
+        appendBytes(bytes, static_cast<std::uint8_t>(finished));
     for (std::size_t t = 0; t < tiles.size(); ++t) {
         if (!partial.finishedTiles[t]) continue;
         const auto appendTile = [&](const Image& film) {
             for (int y = tiles[t].y0; y < tiles[t].y1; ++y)
                 for (int x = tiles[t].x0; x < tiles[t].x1; ++x)
                     for (const float channel : {film.at(x, y).r, film.at(x, y).g, film.at(x, y).b})
-                        append(bytes, channel);
+                        appendBytes(bytes, channel);
         };
         appendTile(partial.film);
         for (const Image& aov : partial.aovFilms)
             appendTile(aov);
     }
-    append(bytes, checksum(bytes));
+    appendBytes(bytes, checksum(bytes));
 
     AtomicFile::write(path, bytes.data(), bytes.size(), "resume file");
 }
