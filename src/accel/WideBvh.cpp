@@ -48,7 +48,7 @@ WideBvh::WideBvh(const Bounds3& bounds, std::vector<WideBvhNode> nodes, const Le
                 isChild[child] = true;
                 if (depth[index] + 1 > Bvh::kMaxDepth)
                     throw std::invalid_argument("the tree is too deep");
-                depth[child] = std::max<std::uint8_t>(depth[child], depth[index] + 1);
+                depth[child] = static_cast<std::uint8_t>(depth[index] + 1);
             }
         }
     }

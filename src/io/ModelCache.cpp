@@ -78,8 +78,10 @@ public:
         if (count > left_ / sizeof(std::uint64_t)) throw DamagedEntry{"is truncated"};
         std::vector<std::string> texts(count);  // each with its length first
         for (std::string& text : texts) {
-            const std::vector<char> chars = readArray<char>();
-            text.assign(chars.begin(), chars.end());
+            const auto length = read<std::uint64_t>();
+            if (length > left_) throw DamagedEntry{"is truncated"};
+            text.resize(length);
+            readInto(text.data(), length);
         }
         return texts;
     }
