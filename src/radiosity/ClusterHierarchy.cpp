@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "math/Bounds3.h"
+#include "math/ColorLanes.h"
 
 namespace lancer {
 
@@ -21,6 +22,16 @@ constexpr std::uint32_t kFacingSearch = 8;
 
 }  // namespace
 
+void ClusterHierarchy::MemberShapes::push_back(const Element& e) {
+    x.push_back(e.centroid.x);
+    y.push_back(e.centroid.y);
+    z.push_back(e.centroid.z);
+    nx.push_back(e.normal.x);
+    ny.push_back(e.normal.y);
+    nz.push_back(e.normal.z);
+    area.push_back(e.area);
+}
+
 ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::uint32_t> roots)
     : members_(std::move(roots)) {
     if (members_.size() < 2) {
@@ -33,7 +44,7 @@ ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::u
     for (std::size_t i = 0; i < members_.size(); ++i) {
         const Element& e = mesh.elements[members_[i]];
         areaBefore_[i + 1] = areaBefore_[i] + e.area;
-        memberShapes_.push_back({e.centroid, e.normal, e.area});
+        memberShapes_.push_back(e);
     }
 }
 
@@ -90,6 +101,32 @@ ClusterHierarchy::Extent ClusterHierarchy::extent(const RadiosityMesh& mesh,
     return {e.centroid, radius};
 }
 
+Color ClusterHierarchy::irradianceAt(std::uint32_t node, const Vec3& at,
+                                     const MemberRadiosities& radiosities) const {
+    const Cluster& c = cluster(node);
+    const MemberShapes& m = memberShapes_;
+    const ColorArrays& front = radiosities[sideIndex(Side::Front)];
+    const ColorArrays& back = radiosities[sideIndex(Side::Back)];
+    ColorLanes sum;
+    ColorLanes::forEach(
+        c.firstMember, c.firstMember + c.memberCount, [&](std::uint32_t lane, std::uint32_t i) {
+            const Term t = term(at.x - m.x[i], at.y - m.y[i], at.z - m.z[i], m.nx[i], m.ny[i],
+                                m.nz[i], m.area[i]);
+            // Both sides read, then one chosen: no branch in the lanes.
+            const float fr = front.r[i], fg = front.g[i], fb = front.b[i];
+            const float br = back.r[i], bg = back.g[i], bb = back.b[i];
+            sum.add(lane, t.weight, t.front ? fr : br, t.front ? fg : bg, t.front ? fb : bb);
+        });
+    return sum.total();
+}
+
+Color ClusterHierarchy::irradianceAt(const Element& e, const Vec3& at,
+                                     const std::array<Color, 2>& radiosity) {
+    const Vec3 toward = at - e.centroid;
+    const Term t = term(toward.x, toward.y, toward.z, e.normal.x, e.normal.y, e.normal.z, e.area);
+    return radiosity[sideIndex(t.front ? Side::Front : Side::Back)] * t.weight;
+}
+
 ClusterHierarchy::SurfacePoint ClusterHierarchy::sample(const RadiosityMesh& mesh,
                                                         std::uint32_t node, const Vec3& towards,
                                                         Vec2 u) const {
@@ -109,8 +146,9 @@ ClusterHierarchy::SurfacePoint ClusterHierarchy::sample(const RadiosityMesh& mes
                         : 0.5f;
         for (std::uint32_t k = 0; k < std::min(kFacingSearch, c.memberCount); ++k) {
             const std::uint32_t j = c.firstMember + (i - c.firstMember + k) % c.memberCount;
-            const Element& m = mesh.elements[members_[j]];
-            if (dot(m.normal, towards - m.centroid) > 0) {
+            const MemberShapes& m = memberShapes_;
+            const Vec3 normal(m.nx[j], m.ny[j], m.nz[j]), centroid(m.x[j], m.y[j], m.z[j]);
+            if (dot(normal, towards - centroid) > 0) {
                 i = j;
                 break;
             }

@@ -3,11 +3,13 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <vector>
 
 #include "math/Color.h"
+#include "math/ColorArrays.h"
 #include "math/Vec2.h"
 #include "math/Vec3.h"
 #include "radiosity/Element.h"
@@ -38,7 +40,7 @@ public:
         float radius = 0;       // half that box's diagonal: a bounding sphere
         float area = 0;         // its members' total
         float reflectance = 0;  // the largest of its members' (averaged over the channels)
-        std::array<std::uint32_t, 2> children{};  // nodes
+        std::array<std::uint32_t, 2> children{};  // nodes, clusters after their parent
         std::uint32_t parent = Element::kNone;    // cluster index, kNone for the top
         std::uint32_t firstMember = 0;            // its members are members()[first, first + count)
         std::uint32_t memberCount = 0;
@@ -68,23 +70,27 @@ public:
 
     Extent extent(const RadiosityMesh& mesh, std::uint32_t node) const;
 
-    // The irradiance a node delivers at `at` across a plane facing it (at normal incidence): the
-    // sum over its elements (the node itself, or a cluster's members) of B A cos / (pi d^2), from
-    // each element's centroid and with its side that faces `at`, B given by
-    // `radiosityOf(element, side)`.
+    // The members' radiosities in the members' order, per side (front, back): what a cluster's
+    // irradianceAt reads, in a row, filled from the elements' by fillMemberRadiosities.
+    using MemberRadiosities = std::array<ColorArrays, 2>;
     template <typename RadiosityOf>
-    Color irradianceAt(const RadiosityMesh& mesh, std::uint32_t node, const Vec3& at,
-                       RadiosityOf radiosityOf) const {
-        if (!isCluster(node)) {
-            const Element& e = mesh.elements[node];
-            return term({e.centroid, e.normal, e.area}, node, at, radiosityOf);
+    void fillMemberRadiosities(MemberRadiosities& into, RadiosityOf radiosityOf) const {
+        for (Side side : kBothSides) {
+            ColorArrays& arrays = into[sideIndex(side)];
+            arrays.resize(members_.size());
+            for (std::size_t i = 0; i < members_.size(); ++i)
+                arrays.set(i, radiosityOf(members_[i], side));
         }
-        const Cluster& c = cluster(node);
-        Color sum;
-        for (std::uint32_t i = c.firstMember; i < c.firstMember + c.memberCount; ++i)
-            sum += term(memberShapes_[i], members_[i], at, radiosityOf);
-        return sum;
     }
+
+    // The irradiance a cluster (a node) delivers at `at` across a plane facing it (at normal
+    // incidence): the sum over its members of B A cos / (pi d^2), from each member's centroid and
+    // with its side that faces `at`, B from `radiosities`.
+    Color irradianceAt(std::uint32_t node, const Vec3& at,
+                       const MemberRadiosities& radiosities) const;
+    // The same for one element, of the given radiosity per side.
+    static Color irradianceAt(const Element& e, const Vec3& at,
+                              const std::array<Color, 2>& radiosity);
 
     // A point of the node for a visibility ray towards `towards` (uniform by area over its
     // elements, from `u`), on the side facing it, and that element's patch. A cluster's point is
@@ -99,25 +105,29 @@ public:
                         Vec2 u) const;
 
 private:
-    // What irradianceAt reads of an element, kept for the members in their order: a sum over a
-    // large cluster reads these in a row instead of 160-byte Elements here and there.
-    struct MemberShape {
-        Vec3 centroid;
-        Vec3 normal;
-        float area = 0;
+    // What irradianceAt (and sample's search for a facing member) reads of the members, in their
+    // order and one array per coordinate: a sum over a large cluster reads these in a row,
+    // several members at a time, instead of 160-byte Elements here and there.
+    struct MemberShapes {
+        std::vector<float> x, y, z;     // centroid
+        std::vector<float> nx, ny, nz;  // normal
+        std::vector<float> area;
+        void push_back(const Element& e);
     };
 
-    // Element e's term of irradianceAt.
-    template <typename RadiosityOf>
-    static Color term(const MemberShape& shape, std::uint32_t e, const Vec3& at,
-                      RadiosityOf radiosityOf) {
-        const Vec3 toward = at - shape.centroid;
-        const float d2 = dot(toward, toward);
-        if (!(d2 > 0)) return Color(0);
-        const float cosine = dot(shape.normal, toward) / std::sqrt(d2);
-        const Side side = cosine > 0 ? Side::Front : Side::Back;
-        return radiosityOf(e, side) *
-               (shape.area * std::abs(cosine) / (std::numbers::pi_v<float> * d2));
+    // One term of irradianceAt: its weight A |cos| / (pi d^2) (none at the element's centroid),
+    // and whether `toward` (from the centroid to the point) leaves by the front.
+    struct Term {
+        float weight;
+        bool front;
+    };
+    static Term term(float tx, float ty, float tz, float nx, float ny, float nz, float area) {
+        // The smallest normal float added changes no distance of 1e-15 or more, and at the
+        // centroid itself makes the cosine, so the weight, 0 without a branch (the compiler runs
+        // a division in SIMD lanes only where nothing decides whether it runs).
+        const float d2 = tx * tx + ty * ty + tz * tz + std::numeric_limits<float>::min();
+        const float cosine = (nx * tx + ny * ty + nz * tz) / std::sqrt(d2);
+        return {area * std::abs(cosine) / (std::numbers::pi_v<float> * d2), cosine > 0};
     }
 
     // Builds the subtree over members_[first, first + count) and returns its node.
@@ -125,8 +135,8 @@ private:
                         std::uint32_t parent);
 
     std::vector<Cluster> clusters_;
-    std::vector<std::uint32_t> members_;     // root elements, each cluster's contiguous
-    std::vector<MemberShape> memberShapes_;  // in the order of members_
+    std::vector<std::uint32_t> members_;  // root elements, each cluster's contiguous
+    MemberShapes memberShapes_;
     std::vector<double> areaBefore_;         // area of members_[0, i), for sampling
     std::vector<std::uint32_t> rootParent_;  // per element, for the roots
 };

@@ -3,7 +3,10 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <limits>
+#include <numeric>
 
+#include "math/ColorLanes.h"
 #include "radiosity/LightIrradiance.h"
 #include "radiosity/PatchMesher.h"
 #include "radiosity/RadiosityReporter.h"
@@ -81,6 +84,21 @@ std::array<Vec3, 3> quadraturePoints(const std::array<Vec3, 3>& t) {
             kNear * t[2] + kFar * (t[0] + t[1])};
 }
 
+// receivedShare() from (tx, ty, tz), the vector from the element's centroid to the source's
+// centre, and the element's normal n. The smallest normal float added to the squared distance
+// changes none of 1e-15 or more, and makes the cosine, so the share, 0 at the centre itself
+// without a branch: clusterLinksAt runs this in SIMD lanes, which the compiler does only where
+// nothing decides whether a division runs.
+struct Share {
+    float fraction;
+    bool front;
+};
+Share shareToward(float tx, float ty, float tz, const Vec3& n, float linkDistance2) {
+    const float d2 = tx * tx + ty * ty + tz * tz + std::numeric_limits<float>::min();
+    const float cosine = (n.x * tx + n.y * ty + n.z * tz) / std::sqrt(d2);
+    return {std::abs(cosine) * linkDistance2 / d2, cosine > 0};
+}
+
 }  // namespace
 
 HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene)
@@ -98,7 +116,11 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene)
     for (const Patch& p : mesh_.patches)
         for (std::uint32_t e = p.firstElement; e < p.firstElement + p.elementCount; ++e)
             roots_.push_back(e);
-    if (settings_.clusters) clusters_ = ClusterHierarchy(mesh_, roots_);
+    if (settings_.clusters) {
+        clusters_ = ClusterHierarchy(mesh_, roots_);
+        clusters_.fillMemberRadiosities(unitRadiosities_,
+                                        [](std::uint32_t, Side) { return Color(1); });
+    }
 }
 
 std::size_t HierarchicalRadiosity::linkCount() const {
@@ -273,49 +295,64 @@ std::uint32_t HierarchicalRadiosity::clusterSplitChoice(std::uint32_t receiver,
 }
 
 double HierarchicalRadiosity::sourcePower(std::uint32_t node) const {
-    const auto power = [&](std::uint32_t e) {
-        return static_cast<double>((radiosity_[e][0] + radiosity_[e][1]).average()) *
-               mesh_.elements[e].area;
-    };
-    if (!ClusterHierarchy::isCluster(node)) return power(node);
-    double sum = 0;
-    for (std::uint32_t e : clusters_.members(clusters_.cluster(node)))
-        sum += power(e);
-    return sum;
+    if (ClusterHierarchy::isCluster(node)) return clusterPower_[ClusterHierarchy::indexOf(node)];
+    return static_cast<double>((radiosity_[node][0] + radiosity_[node][1]).average()) *
+           mesh_.elements[node].area;
+}
+
+Color HierarchicalRadiosity::deliveredAt(std::uint32_t node, const Vec3& at, bool unit) const {
+    if (ClusterHierarchy::isCluster(node))
+        return clusters_.irradianceAt(node, at, unit ? unitRadiosities_ : memberRadiosities_);
+    return ClusterHierarchy::irradianceAt(
+        mesh_.elements[node], at,
+        unit ? std::array<Color, 2>{Color(1), Color(1)} : radiosity_[node]);
+}
+
+void HierarchicalRadiosity::refreshMemberRadiosities() {
+    if (clusters_.empty()) return;
+    clusters_.fillMemberRadiosities(memberRadiosities_, [&](std::uint32_t e, Side side) {
+        return radiosity_[e][sideIndex(side)];
+    });
+    // Each cluster's power from its two children's (which come after it).
+    const std::vector<ClusterHierarchy::Cluster>& all = clusters_.clusters();
+    clusterPower_.resize(all.size());
+    for (std::size_t k = all.size(); k-- > 0;) {
+        double sum = 0;
+        for (std::uint32_t child : all[k].children)
+            sum += sourcePower(child);
+        clusterPower_[k] = sum;
+    }
 }
 
 Color HierarchicalRadiosity::clusterTransfer(const ClusterLink& link) const {
-    return link.visibility *
-           clusters_.irradianceAt(
-               mesh_, link.source, clusters_.extent(mesh_, link.receiver).center,
-               [&](std::uint32_t e, Side side) { return radiosity_[e][sideIndex(side)]; });
+    return link.visibility * deliveredAt(link.source, link.receiverCenter, false);
 }
 
 double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link) const {
+    return clusterLinkError(link, deliveredAt(link.source, link.receiverCenter, false));
+}
+
+double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link,
+                                               const Color& unoccluded) const {
     const float reflectance = ClusterHierarchy::isCluster(link.receiver)
                                   ? clusters_.cluster(link.receiver).reflectance
                                   : mesh_.elements[link.receiver].reflectance.average();
-    ClusterLink unoccluded = link;
-    unoccluded.visibility = Color(1);
-    return static_cast<double>(reflectance) * clusterTransfer(unoccluded).average() *
+    return static_cast<double>(reflectance) * unoccluded.average() *
            (link.spread + (link.partlyVisible() ? 1.0f : 0.0f));
 }
 
-std::optional<HierarchicalRadiosity::ReceivedShare> HierarchicalRadiosity::receivedShare(
-    const Element& element, const ClusterLink& link) {
-    const Vec3 toward = link.sourceCenter - element.centroid;
-    const float d2 = dot(toward, toward);
-    if (!(d2 > 0)) return std::nullopt;
-    const float cosine = dot(element.normal, toward) / std::sqrt(d2);
-    return ReceivedShare{std::abs(cosine) * link.distance2 / d2,
-                         cosine > 0 ? Side::Front : Side::Back};
+HierarchicalRadiosity::ReceivedShare HierarchicalRadiosity::receivedShare(const Element& element,
+                                                                          const ClusterLink& link) {
+    const Vec3 t = link.sourceCenter - element.centroid;
+    const Share share = shareToward(t.x, t.y, t.z, element.normal, link.distance2);
+    return {share.fraction, share.front ? Side::Front : Side::Back};
 }
 
 Color HierarchicalRadiosity::clusterLinkPower(const ClusterLink& link) const {
     const Color transfer = clusterTransfer(link);
     const auto power = [&](std::uint32_t e) {
-        const std::optional<ReceivedShare> share = receivedShare(mesh_.elements[e], link);
-        return share ? mesh_.elements[e].area * (share->fraction * transfer) : Color(0);
+        return mesh_.elements[e].area *
+               (receivedShare(mesh_.elements[e], link).fraction * transfer);
     };
     if (!ClusterHierarchy::isCluster(link.receiver)) return power(link.receiver);
     Color sum;
@@ -377,21 +414,20 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
     ClusterLink link;
     link.receiver = c.receiver;
     link.source = c.source;
+    link.receiverCenter = receiver.center;
     link.sourceCenter = source.center;
     link.distance2 = distance * distance;
     link.spread = distance >= kClusterSeparation * radii ? 2 * radii / distance : kNearSpread;
     link.visibility = Color(1);
-    if (clusterLinkError(link) > epsilon_) return d;
+    // What the source brings without occlusion: summed once over its members for both errors.
+    const Color unoccluded = deliveredAt(c.source, receiver.center, false);
+    if (clusterLinkError(link, unoccluded) > epsilon_) return d;
     d.split = Element::kNone;
     // Nothing of the source faces the receiver (one plane): nothing to link.
-    if (clusters_
-            .irradianceAt(mesh_, c.source, receiver.center,
-                          [](std::uint32_t, Side) { return Color(1); })
-            .isBlack())
-        return d;
+    if (unoccluded.isBlack() && deliveredAt(c.source, receiver.center, true).isBlack()) return d;
     link.visibility = clusterVisibility(c.receiver, c.source, settings_.visibilityRays,
                                         hashValues(c.receiver, c.source), rayCount);
-    if (clusterLinkError(link) > epsilon_) {
+    if (clusterLinkError(link, unoccluded) > epsilon_) {
         d.split = clusterSplitChoice(c.receiver, c.source);
         return d;
     }
@@ -399,37 +435,38 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
     return d;
 }
 
-std::array<Color, 2> HierarchicalRadiosity::clusterLinksAt(
-    const Element& at, std::uint32_t leaf, const std::vector<Color>& perLink) const {
-    // Two sums of their own, not an array indexed by the side: those made a chain of stores
-    // and loads through memory, this loop's cost.
-    Color front, back;
-    const auto take = [&](std::uint32_t l) {
-        const std::optional<ReceivedShare> share = receivedShare(at, clusterLinks_[l]);
-        if (!share) return;
-        if (share->side == Side::Front)
-            front += share->fraction * perLink[l];
-        else
-            back += share->fraction * perLink[l];
+std::array<Color, 2> HierarchicalRadiosity::clusterLinksAt(const Element& at, std::uint32_t leaf,
+                                                           const ColorArrays& perLink) const {
+    // receivedShare() for each link the leaf takes, in SIMD lanes: the links of one receiver are
+    // one range of arrays. Each term goes to the front's sum or the back's.
+    const ReceivedLinks& links = received_;
+    const Vec3& c = at.centroid;
+    const Vec3& n = at.normal;
+    ColorLanes front, back;
+    const auto take = [&](std::uint32_t first, std::uint32_t last) {
+        ColorLanes::forEach(first, last, [&](std::uint32_t lane, std::uint32_t l) {
+            const Share share = shareToward(links.x[l] - c.x, links.y[l] - c.y, links.z[l] - c.z, n,
+                                            links.distance2[l]);
+            ColorLanes::addToOne(share.front, front, back, lane, share.fraction, perLink.r[l],
+                                 perLink.g[l], perLink.b[l]);
+        });
     };
     std::uint32_t root = leaf;
     for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e]) {
-        for (std::uint32_t l : elementReceives_[e])
-            take(l);
+        take(elementReceives_[e], elementReceives_[e + 1]);
         root = e;
     }
-    for (std::uint32_t c = clusters_.parentOf(root); c != Element::kNone;
-         c = clusters_.clusters()[c].parent)
-        for (std::uint32_t l : clusterReceives_[c])
-            take(l);
+    for (std::uint32_t k = clusters_.parentOf(root); k != Element::kNone;
+         k = clusters_.clusters()[k].parent)
+        take(clusterReceives_[k], clusterReceives_[k + 1]);
     std::array<Color, 2> E;
-    E[sideIndex(Side::Front)] = front;
-    E[sideIndex(Side::Back)] = back;
+    E[sideIndex(Side::Front)] = front.total();
+    E[sideIndex(Side::Back)] = back.total();
     return E;
 }
 
 std::vector<std::array<Color, 2>> HierarchicalRadiosity::gatherThroughClusters(
-    const std::vector<Color>& perLink) const {
+    const ColorArrays& perLink) const {
     std::vector<std::array<Color, 2>> gathered(mesh_.elements.size());
     if (clusters_.empty()) return gathered;
     // The leaves of one root one after the other, the roots in the clusters' order: neighbours
@@ -458,8 +495,9 @@ std::vector<std::array<Color, 2>> HierarchicalRadiosity::gatherThroughClusters(
 void HierarchicalRadiosity::updateFromClusters() {
     if (clusters_.empty()) return;
     clusterTransfers_.resize(clusterLinks_.size());
-    parallelFor(clusterLinks_.size(), 64,
-                [&](std::size_t i) { clusterTransfers_[i] = clusterTransfer(clusterLinks_[i]); });
+    parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
+        clusterTransfers_.set(linkPosition_[i], clusterTransfer(clusterLinks_[i]));
+    });
     fromClusters_ = gatherThroughClusters(clusterTransfers_);
 }
 
@@ -525,13 +563,34 @@ void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
         prepareElements(before);
         again = mesh_.elements.size() > before;
     }
-    clusterReceives_.assign(clusters_.clusters().size(), {});
-    elementReceives_.assign(mesh_.elements.size(), {});
-    for (std::uint32_t i = 0; i < clusterLinks_.size(); ++i) {
-        const std::uint32_t r = clusterLinks_[i].receiver;
-        (ClusterHierarchy::isCluster(r) ? clusterReceives_[ClusterHierarchy::indexOf(r)]
-                                        : elementReceives_[r])
-            .push_back(i);
+    indexClusterLinks();
+}
+
+void HierarchicalRadiosity::indexClusterLinks() {
+    // A counting sort by receiver, each receiver's links in the order they were made: slots of
+    // the elements, then of the clusters.
+    const std::size_t elements = mesh_.elements.size(), count = clusterLinks_.size();
+    const auto slot = [&](std::uint32_t node) {
+        return ClusterHierarchy::isCluster(node) ? elements + ClusterHierarchy::indexOf(node)
+                                                 : std::size_t{node};
+    };
+    std::vector<std::uint32_t> next(elements + clusters_.clusters().size() + 1, 0);
+    for (const ClusterLink& link : clusterLinks_)
+        ++next[slot(link.receiver) + 1];
+    std::partial_sum(next.begin(), next.end(), next.begin());
+    elementReceives_.assign(next.begin(), next.begin() + static_cast<std::ptrdiff_t>(elements) + 1);
+    clusterReceives_.assign(next.begin() + static_cast<std::ptrdiff_t>(elements), next.end());
+    linkPosition_.resize(count);
+    for (std::vector<float>* v : {&received_.x, &received_.y, &received_.z, &received_.distance2})
+        v->resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const ClusterLink& link = clusterLinks_[i];
+        const std::uint32_t at = next[slot(link.receiver)]++;
+        linkPosition_[i] = at;
+        received_.x[at] = link.sourceCenter.x;
+        received_.y[at] = link.sourceCenter.y;
+        received_.z[at] = link.sourceCenter.z;
+        received_.distance2[at] = link.distance2;
     }
 }
 
@@ -580,13 +639,12 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
     leafTerms_.assign(resolved ? mesh_.elements.size() : 0, {});
     coverage_.assign(mesh_.elements.size(), {0, 0});
     // The cluster links' form factors: what they would bring from sources of radiosity 1.
-    std::vector<Color> unit(clusterLinks_.size());
+    ColorArrays unit;
+    unit.resize(clusterLinks_.size());
     parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
         const ClusterLink& link = clusterLinks_[i];
-        unit[i] =
-            link.visibility * clusters_.irradianceAt(mesh_, link.source,
-                                                     clusters_.extent(mesh_, link.receiver).center,
-                                                     [](std::uint32_t, Side) { return Color(1); });
+        unit.set(linkPosition_[i],
+                 link.visibility * deliveredAt(link.source, link.receiverCenter, true));
     });
     const std::vector<std::array<Color, 2>> clusterCoverage = gatherThroughClusters(unit);
     parallelFor(leaves.size(), 8, [&](std::size_t i) {
@@ -684,6 +742,7 @@ double HierarchicalRadiosity::iteration(bool resolved) {
                 sum[side] += (mesh_.elements[c].area / element.area) * radiosity_[c][side];
         radiosity_[k] = sum;
     }
+    refreshMemberRadiosities();
     ++iterations_;
     return change;
 }
@@ -789,6 +848,7 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
             initialPower_ += static_cast<double>(radiosity_[root][side].average()) * e.area;
         }
     }
+    refreshMemberRadiosities();
     residual_ = initialPower_;
     double area = 0;
     for (std::uint32_t root : roots_)

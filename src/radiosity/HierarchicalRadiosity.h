@@ -95,7 +95,7 @@ public:
     // square of its own distance and its own cosine.
     struct ClusterLink {
         std::uint32_t receiver = 0, source = 0;  // nodes (ClusterHierarchy)
-        Vec3 sourceCenter;
+        Vec3 receiverCenter, sourceCenter;
         float distance2 = 0;  // from the receiver's centre to the source's, squared
         float spread = 0;     // the relative error of the point-to-point transfer
         Color visibility;
@@ -118,8 +118,7 @@ public:
         float fraction = 0;
         Side side = Side::Front;
     };
-    static std::optional<ReceivedShare> receivedShare(const Element& element,
-                                                      const ClusterLink& link);
+    static ReceivedShare receivedShare(const Element& element, const ClusterLink& link);
 
     // Radiosity (W/m^2) leaving each side of each element, as the last iteration left it.
     const std::vector<std::array<Color, 2>>& radiosity() const { return radiosity_; }
@@ -165,6 +164,8 @@ private:
     // The oracle's error for a cluster link: the radiosity it brings to the receiver may be off by
     // this much (W/m^2).
     double clusterLinkError(const ClusterLink& link) const;
+    // The same, given what its source brings without occlusion (deliveredAt).
+    double clusterLinkError(const ClusterLink& link, const Color& unoccluded) const;
     // The power (W, averaged over the channels) a node's elements send from both sides.
     double sourcePower(std::uint32_t node) const;
     // The irradiance at normal incidence the link brings, from the present radiosities.
@@ -174,12 +175,19 @@ private:
                             std::uint64_t seed, std::uint64_t& rayCount) const;
     // What the cluster links received by a leaf, its ancestors and the clusters above its root
     // bring to `at` (the leaf, or a gather site on it) when each brings `perLink` (at normal
-    // incidence, at its receiver's centre): see receivedShare().
+    // incidence, at its receiver's centre; in the order of the receivers, see linkPosition_):
+    // see receivedShare().
     std::array<Color, 2> clusterLinksAt(const Element& at, std::uint32_t leaf,
-                                        const std::vector<Color>& perLink) const;
+                                        const ColorArrays& perLink) const;
     // The same at every leaf (indexed by element).
-    std::vector<std::array<Color, 2>> gatherThroughClusters(
-        const std::vector<Color>& perLink) const;
+    std::vector<std::array<Color, 2>> gatherThroughClusters(const ColorArrays& perLink) const;
+    // What a node (an element or a cluster) delivers at `at` at normal incidence, from the
+    // present radiosities, or from radiosity 1 everywhere (`unit`).
+    Color deliveredAt(std::uint32_t node, const Vec3& at, bool unit) const;
+    // memberRadiosities_ from the root elements' present radiosities.
+    void refreshMemberRadiosities();
+    // Lays out the cluster links in the order of their receivers for clusterLinksAt.
+    void indexClusterLinks();
     // clusterTransfers_ and fromClusters_ from the present radiosities.
     void updateFromClusters();
     // The refinement's first candidates: the top cluster's link to itself, or every pair of
@@ -223,10 +231,20 @@ private:
     std::vector<std::vector<Link>> links_;
     ClusterHierarchy clusters_;
     std::vector<ClusterLink> clusterLinks_;
-    // Per cluster and per element, the cluster links it receives (indices into clusterLinks_).
-    std::vector<std::vector<std::uint32_t>> clusterReceives_;
-    std::vector<std::vector<std::uint32_t>> elementReceives_;
-    std::vector<Color> clusterTransfers_;             // what each brings to its receiver's centre
+    // The cluster links in the order of their receivers, which clusterLinksAt reads: link i of
+    // clusterLinks_ is at linkPosition_[i]; those of element e are at [elementReceives_[e],
+    // elementReceives_[e + 1]), of cluster c at [clusterReceives_[c], clusterReceives_[c + 1]).
+    std::vector<std::uint32_t> linkPosition_, elementReceives_, clusterReceives_;
+    // What clusterLinksAt reads of each, in that order and one array per number: its source's
+    // centre and its receiver's squared distance to it.
+    struct ReceivedLinks {
+        std::vector<float> x, y, z, distance2;
+    };
+    ReceivedLinks received_;
+    // The root elements' radiosities in the clusters' member order, and radiosity 1 in its place.
+    ClusterHierarchy::MemberRadiosities memberRadiosities_, unitRadiosities_;
+    std::vector<double> clusterPower_;  // per cluster, sourcePower(), refreshed with them
+    ColorArrays clusterTransfers_;      // what each brings to its receiver's centre, in that order
     std::vector<std::array<Color, 2>> fromClusters_;  // per leaf: what they all bring it
     std::vector<std::array<Color, 2>> gathered_;      // through the element's own links
     // What each leaf gathers: every link of the leaf and of its ancestors, with the form factor

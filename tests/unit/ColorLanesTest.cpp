@@ -1,0 +1,73 @@
+// Colour sums in SIMD lanes: each term lands in one lane, in a fixed order, so that the total is
+// the same whatever the CPU or the number of terms a loop takes at a time.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "math/ColorArrays.h"
+#include "math/ColorLanes.h"
+
+namespace lancer {
+namespace {
+
+TEST(ColorLanesTest, ForEachVisitsEveryIndexOnceInItsLane) {
+    for (std::uint32_t first : {0u, 3u}) {
+        for (std::uint32_t count : {0u, 1u, 7u, 8u, 9u, 16u, 21u}) {
+            std::vector<int> visits(first + count, 0);
+            ColorLanes::forEach(first, first + count, [&](std::uint32_t lane, std::uint32_t i) {
+                EXPECT_EQ(lane, (i - first) % ColorLanes::kLanes) << first << " " << count;
+                ++visits[i];
+            });
+            for (std::uint32_t i = 0; i < first + count; ++i)
+                EXPECT_EQ(visits[i], i >= first ? 1 : 0) << i;
+        }
+    }
+}
+
+TEST(ColorLanesTest, TheTotalAddsEachLanesSumInLaneOrder) {
+    // Terms whose sum depends on the order of the additions: 1e8 and -1e8 cancel only when they
+    // meet before the small terms are rounded away.
+    std::vector<float> terms(19);
+    for (std::size_t i = 0; i < terms.size(); ++i)
+        terms[i] = (i % 3 == 0) ? 1e8f : (i % 3 == 1 ? -1e8f : 0.75f + static_cast<float>(i));
+    ColorLanes sum;
+    ColorLanes::forEach(
+        0, static_cast<std::uint32_t>(terms.size()),
+        [&](std::uint32_t lane, std::uint32_t i) { sum.add(lane, terms[i], 1, 2, 0.5f); });
+    // The same additions by hand: lane by lane, then the lanes in order.
+    float lanes[ColorLanes::kLanes] = {};
+    for (std::size_t i = 0; i < terms.size(); ++i)
+        lanes[i % ColorLanes::kLanes] += terms[i];
+    float expected = 0;
+    for (float lane : lanes)
+        expected += lane;
+    // Each channel's sum is the same sum of products (exact here: by 1, 2 and 0.5).
+    EXPECT_EQ(sum.total(), Color(expected, 2 * expected, 0.5f * expected));
+}
+
+TEST(ColorLanesTest, AddToOneLeavesTheOtherSumUntouchedEvenByAnInfiniteTerm) {
+    ColorLanes front, back;
+    const float inf = std::numeric_limits<float>::infinity();
+    ColorLanes::addToOne(true, front, back, 2, 0.5f, 2, inf, 4);
+    ColorLanes::addToOne(false, front, back, 2, 0.25f, 8, 1, 0);
+    EXPECT_EQ(front.total().r, 1.0f);
+    EXPECT_EQ(front.total().g, inf);
+    EXPECT_EQ(front.total().b, 2.0f);
+    EXPECT_EQ(back.total(), Color(2, 0.25f, 0));
+}
+
+TEST(ColorArraysTest, KeepsEachChannelInItsArray) {
+    ColorArrays colors;
+    colors.resize(3);
+    colors.set(1, Color(1, 2, 3));
+    EXPECT_EQ(colors.size(), 3u);
+    EXPECT_EQ(colors[1], Color(1, 2, 3));
+    EXPECT_EQ(colors[0], Color(0));
+    EXPECT_EQ(colors.g[1], 2.0f);
+}
+
+}  // namespace
+}  // namespace lancer
