@@ -69,6 +69,10 @@ public:
     }
 
     Extent extent(const RadiosityMesh& mesh, std::uint32_t node) const;
+    // extent(mesh, node).center, without the radius.
+    Vec3 center(const RadiosityMesh& mesh, std::uint32_t node) const {
+        return isCluster(node) ? cluster(node).center : mesh.elements[node].centroid;
+    }
 
     // The members' radiosities in the members' order, per side (front, back): what a cluster's
     // irradianceAt reads, in a row, filled from the elements' by fillMemberRadiosities.

@@ -325,11 +325,13 @@ void HierarchicalRadiosity::refreshMemberRadiosities() {
 }
 
 Color HierarchicalRadiosity::clusterTransfer(const ClusterLink& link) const {
-    return link.visibility * deliveredAt(link.source, link.receiverCenter, false);
+    return link.visibility *
+           deliveredAt(link.source, clusters_.center(mesh_, link.receiver), false);
 }
 
 double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link) const {
-    return clusterLinkError(link, deliveredAt(link.source, link.receiverCenter, false));
+    return clusterLinkError(
+        link, deliveredAt(link.source, clusters_.center(mesh_, link.receiver), false));
 }
 
 double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link,
@@ -341,10 +343,18 @@ double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link,
            (link.spread + (link.partlyVisible() ? 1.0f : 0.0f));
 }
 
-HierarchicalRadiosity::ReceivedShare HierarchicalRadiosity::receivedShare(const Element& element,
-                                                                          const ClusterLink& link) {
-    const Vec3 t = link.sourceCenter - element.centroid;
-    const Share share = shareToward(t.x, t.y, t.z, element.normal, link.distance2);
+float HierarchicalRadiosity::linkDistance2(std::uint32_t receiver, std::uint32_t source) const {
+    // The distance squared, not the dot product: the numbers decideWithCluster judged by.
+    const float distance =
+        length(clusters_.center(mesh_, source) - clusters_.center(mesh_, receiver));
+    return distance * distance;
+}
+
+HierarchicalRadiosity::ReceivedShare HierarchicalRadiosity::receivedShare(
+    const Element& element, const ClusterLink& link) const {
+    const Vec3 t = clusters_.center(mesh_, link.source) - element.centroid;
+    const Share share =
+        shareToward(t.x, t.y, t.z, element.normal, linkDistance2(link.receiver, link.source));
     return {share.fraction, share.front ? Side::Front : Side::Back};
 }
 
@@ -364,8 +374,8 @@ Color HierarchicalRadiosity::clusterLinkPower(const ClusterLink& link) const {
 Color HierarchicalRadiosity::clusterVisibility(std::uint32_t receiver, std::uint32_t source,
                                                int rays, std::uint64_t seed,
                                                std::uint64_t& rayCount) const {
-    const Vec3 receiverCenter = clusters_.extent(mesh_, receiver).center;
-    const Vec3 sourceCenter = clusters_.extent(mesh_, source).center;
+    const Vec3 receiverCenter = clusters_.center(mesh_, receiver);
+    const Vec3 sourceCenter = clusters_.center(mesh_, source);
     // On a curved surface, a chord's point moves onto the surface and a little off it towards
     // the other end (as FormFactor's targets do).
     const auto onSurface = [](ClusterHierarchy::SurfacePoint& s) {
@@ -414,9 +424,6 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
     ClusterLink link;
     link.receiver = c.receiver;
     link.source = c.source;
-    link.receiverCenter = receiver.center;
-    link.sourceCenter = source.center;
-    link.distance2 = distance * distance;
     link.spread = distance >= kClusterSeparation * radii ? 2 * radii / distance : kNearSpread;
     link.visibility = Color(1);
     // What the source brings without occlusion: summed once over its members for both errors.
@@ -587,10 +594,11 @@ void HierarchicalRadiosity::indexClusterLinks() {
         const ClusterLink& link = clusterLinks_[i];
         const std::uint32_t at = next[slot(link.receiver)]++;
         linkPosition_[i] = at;
-        received_.x[at] = link.sourceCenter.x;
-        received_.y[at] = link.sourceCenter.y;
-        received_.z[at] = link.sourceCenter.z;
-        received_.distance2[at] = link.distance2;
+        const Vec3 sourceCenter = clusters_.center(mesh_, link.source);
+        received_.x[at] = sourceCenter.x;
+        received_.y[at] = sourceCenter.y;
+        received_.z[at] = sourceCenter.z;
+        received_.distance2[at] = linkDistance2(link.receiver, link.source);
     }
 }
 
@@ -644,7 +652,8 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
     parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
         const ClusterLink& link = clusterLinks_[i];
         unit.set(linkPosition_[i],
-                 link.visibility * deliveredAt(link.source, link.receiverCenter, true));
+                 link.visibility *
+                     deliveredAt(link.source, clusters_.center(mesh_, link.receiver), true));
     });
     const std::vector<std::array<Color, 2>> clusterCoverage = gatherThroughClusters(unit);
     parallelFor(leaves.size(), 8, [&](std::size_t i) {

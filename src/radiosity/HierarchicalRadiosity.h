@@ -92,12 +92,11 @@ public:
     // A link with a cluster at one end or both: the receiver gathers the irradiance the source
     // delivers at its centre, times the fraction of visibility rays between points of the two
     // that got through; each of its elements takes that from the source's centre, by the inverse
-    // square of its own distance and its own cosine.
+    // square of its own distance and its own cosine. Its ends' centres are their nodes'
+    // (ClusterHierarchy::center).
     struct ClusterLink {
         std::uint32_t receiver = 0, source = 0;  // nodes (ClusterHierarchy)
-        Vec3 receiverCenter, sourceCenter;
-        float distance2 = 0;  // from the receiver's centre to the source's, squared
-        float spread = 0;     // the relative error of the point-to-point transfer
+        float spread = 0;  // the relative error of the point-to-point transfer
         Color visibility;
         bool partlyVisible() const {
             return visibility.maxComponent() > 0 &&
@@ -118,7 +117,7 @@ public:
         float fraction = 0;
         Side side = Side::Front;
     };
-    static ReceivedShare receivedShare(const Element& element, const ClusterLink& link);
+    ReceivedShare receivedShare(const Element& element, const ClusterLink& link) const;
 
     // Radiosity (W/m^2) leaving each side of each element, as the last iteration left it.
     const std::vector<std::array<Color, 2>>& radiosity() const { return radiosity_; }
@@ -159,6 +158,8 @@ private:
     Decision decide(const Candidate& candidate, std::uint64_t& rayCount) const;
     // decide() where an end is a cluster.
     Decision decideWithCluster(const Candidate& candidate, std::uint64_t& rayCount) const;
+    // The squared distance between a pair's centres, as cluster links use it.
+    float linkDistance2(std::uint32_t receiver, std::uint32_t source) const;
     // The larger end of a pair with a cluster (a cluster, or an element that may be split).
     std::uint32_t clusterSplitChoice(std::uint32_t receiver, std::uint32_t source) const;
     // The oracle's error for a cluster link: the radiosity it brings to the receiver may be off by
@@ -236,7 +237,7 @@ private:
     // elementReceives_[e + 1]), of cluster c at [clusterReceives_[c], clusterReceives_[c + 1]).
     std::vector<std::uint32_t> linkPosition_, elementReceives_, clusterReceives_;
     // What clusterLinksAt reads of each, in that order and one array per number: its source's
-    // centre and its receiver's squared distance to it.
+    // centre and its receiver's squared distance to it (linkDistance2).
     struct ReceivedLinks {
         std::vector<float> x, y, z, distance2;
     };

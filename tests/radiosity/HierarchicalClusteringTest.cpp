@@ -97,12 +97,9 @@ TEST(HierarchicalClusteringTest, AClusterLinksPowerIsItsChildrensAndItsMembers) 
         EXPECT_FALSE(link.partlyVisible());
         // The same receiver linked to each of the source's two children instead.
         double children = 0;
-        const Vec3 at = clusters.extent(solver.mesh(), link.receiver).center;
         for (std::uint32_t child : clusters.cluster(link.source).children) {
             HierarchicalRadiosity::ClusterLink part = link;
             part.source = child;
-            part.sourceCenter = clusters.extent(solver.mesh(), child).center;
-            part.distance2 = lengthSquared(part.sourceCenter - at);
             children += solver.clusterLinkPower(part).average();
         }
         // Both within the oracle's bound on the link's relative error.
