@@ -55,6 +55,9 @@ constexpr std::size_t kMostElements = std::size_t{1} << 23;
 constexpr std::size_t kMostLinks = std::size_t{1} << 25;
 constexpr std::size_t kMostLeafTerms = std::size_t{1} << 26;
 
+// How many candidate links are decided at a time (a decision takes about 100 bytes).
+constexpr std::size_t kDecisionSlice = std::size_t{1} << 20;
+
 // A link with a cluster at an end joins ends whose bounding spheres are apart. Its relative error
 // is estimated as twice the sum of their radii over their distance where that distance is at
 // least kClusterSeparation times the sum (the point-to-point transfer's error falls with the
@@ -508,6 +511,32 @@ void HierarchicalRadiosity::updateFromClusters() {
     fromClusters_ = gatherThroughClusters(clusterTransfers_);
 }
 
+void HierarchicalRadiosity::apply(const Candidate& c, const Decision& d,
+                                  std::vector<Candidate>& next) {
+    if (d.split == Element::kNone) {
+        for (int k = 0; k < d.linkCount; ++k)
+            links_[c.receiver].push_back(d.links[static_cast<std::size_t>(k)]);
+        if (d.clusterLink) clusterLinks_.push_back(*d.clusterLink);
+        return;
+    }
+    if (ClusterHierarchy::isCluster(d.split)) {
+        const std::array<std::uint32_t, 2>& children = clusters_.cluster(d.split).children;
+        for (std::uint32_t child : children) {
+            if (c.receiver == c.source)
+                for (std::uint32_t other : children)
+                    next.push_back({child, other});
+            else
+                next.push_back(d.split == c.receiver ? Candidate{child, c.source}
+                                                     : Candidate{c.receiver, child});
+        }
+        return;
+    }
+    const std::uint32_t first = split(d.split);
+    for (std::uint32_t child = first; child < first + 4; ++child)
+        next.push_back(d.split == c.receiver ? Candidate{child, c.source}
+                                             : Candidate{c.receiver, child});
+}
+
 void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
     std::size_t prepared = mesh_.elements.size();
     // Kept from round to round: fresh vectors of millions of decisions had the kernel clear
@@ -516,40 +545,24 @@ void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
     std::vector<Candidate> next;
     while (!candidates.empty() && !cancelled()) {
         checkSize(4 * candidates.size());  // as many as splitting them all would make
-        decisions.assign(candidates.size(), Decision{});
-        rays_ += parallelForCounting(candidates.size(), 64, cancel_,
-                                     [&](std::size_t i, std::uint64_t& rays) {
-                                         decisions[i] = decide(candidates[i], rays);
-                                     });
-        if (cancelled()) break;
-        // In candidate order, whatever the threads: the same hierarchy every time.
         next.clear();
-        for (std::size_t i = 0; i < candidates.size(); ++i) {
-            const Candidate& c = candidates[i];
-            const Decision& d = decisions[i];
-            if (d.split == Element::kNone) {
-                for (int k = 0; k < d.linkCount; ++k)
-                    links_[c.receiver].push_back(d.links[static_cast<std::size_t>(k)]);
-                if (d.clusterLink) clusterLinks_.push_back(*d.clusterLink);
-                continue;
-            }
-            if (ClusterHierarchy::isCluster(d.split)) {
-                const std::array<std::uint32_t, 2>& children = clusters_.cluster(d.split).children;
-                for (std::uint32_t child : children) {
-                    if (c.receiver == c.source)
-                        for (std::uint32_t other : children)
-                            next.push_back({child, other});
-                    else
-                        next.push_back(d.split == c.receiver ? Candidate{child, c.source}
-                                                             : Candidate{c.receiver, child});
-                }
-                continue;
-            }
-            const std::uint32_t first = split(d.split);
-            for (std::uint32_t child = first; child < first + 4; ++child)
-                next.push_back(d.split == c.receiver ? Candidate{child, c.source}
-                                                     : Candidate{c.receiver, child});
+        // A slice at a time, each applied before the next is decided: the decisions of a round
+        // of tens of millions of candidates took gigabytes. The same decisions as all at once:
+        // a split only adds elements, and no decision of the round reads those.
+        for (std::size_t begin = 0; begin < candidates.size() && !cancelled();
+             begin += kDecisionSlice) {
+            const std::size_t count = std::min(kDecisionSlice, candidates.size() - begin);
+            decisions.assign(count, Decision{});
+            rays_ +=
+                parallelForCounting(count, 64, cancel_, [&](std::size_t i, std::uint64_t& rays) {
+                    decisions[i] = decide(candidates[begin + i], rays);
+                });
+            if (cancelled()) break;
+            // In candidate order, whatever the threads: the same hierarchy every time.
+            for (std::size_t i = 0; i < count; ++i)
+                apply(candidates[begin + i], decisions[i], next);
         }
+        if (cancelled()) break;
         prepareElements(prepared);
         prepared = mesh_.elements.size();
         std::swap(candidates, next);

@@ -156,6 +156,8 @@ private:
     // they receive from the scene's lights.
     void prepareElements(std::size_t first);
     Decision decide(const Candidate& candidate, std::uint64_t& rayCount) const;
+    // Makes a decision's links, or splits its end and adds the pairs that replace it to `next`.
+    void apply(const Candidate& candidate, const Decision& decision, std::vector<Candidate>& next);
     // decide() where an end is a cluster.
     Decision decideWithCluster(const Candidate& candidate, std::uint64_t& rayCount) const;
     // The squared distance between a pair's centres, as cluster links use it.
