@@ -256,6 +256,13 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
             if (k < 3) sum += F;
             least = std::min(least, F);
             most = std::max(most, F);
+            // The spread only grows with more probes: once it is enough to split the pair
+            // (below), the others need not be evaluated.
+            if (choice != Element::kNone &&
+                reflected * static_cast<float>(most - least) > epsilon_) {
+                d.split = choice;
+                return d;
+            }
         }
         if (!(most > 0)) continue;
         Link link;
