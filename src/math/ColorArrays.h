@@ -12,7 +12,6 @@ namespace lancer {
 struct ColorArrays {
     std::vector<float> r, g, b;
 
-    std::size_t size() const { return r.size(); }
     void resize(std::size_t n) {
         r.resize(n);
         g.resize(n);
@@ -23,7 +22,6 @@ struct ColorArrays {
         g[i] = c.g;
         b[i] = c.b;
     }
-    Color operator[](std::size_t i) const { return {r[i], g[i], b[i]}; }
 };
 
 }  // namespace lancer

@@ -96,6 +96,19 @@ public:
     static Color irradianceAt(const Element& e, const Vec3& at,
                               const std::array<Color, 2>& radiosity);
 
+    // The cosine between a unit normal n and t, and t's squared length: what a point-to-point
+    // transfer weighs by. The smallest normal float added to the squared length changes none of
+    // 1e-15 or more, and makes the cosine 0 for t = 0 without a branch: the sums over many terms
+    // run this in SIMD lanes, which the compiler does only where nothing decides whether a
+    // division runs.
+    struct Toward {
+        float cosine, distance2;
+    };
+    static Toward toward(float tx, float ty, float tz, float nx, float ny, float nz) {
+        const float d2 = tx * tx + ty * ty + tz * tz + std::numeric_limits<float>::min();
+        return {(nx * tx + ny * ty + nz * tz) / std::sqrt(d2), d2};
+    }
+
     // A point of the node for a visibility ray towards `towards` (uniform by area over its
     // elements, from `u`), on the side facing it, and that element's patch. A cluster's point is
     // taken on a member whose front faces `towards` where one is near in the members' order (a
@@ -126,12 +139,9 @@ private:
         bool front;
     };
     static Term term(float tx, float ty, float tz, float nx, float ny, float nz, float area) {
-        // The smallest normal float added changes no distance of 1e-15 or more, and at the
-        // centroid itself makes the cosine, so the weight, 0 without a branch (the compiler runs
-        // a division in SIMD lanes only where nothing decides whether it runs).
-        const float d2 = tx * tx + ty * ty + tz * tz + std::numeric_limits<float>::min();
-        const float cosine = (nx * tx + ny * ty + nz * tz) / std::sqrt(d2);
-        return {area * std::abs(cosine) / (std::numbers::pi_v<float> * d2), cosine > 0};
+        const Toward t = toward(tx, ty, tz, nx, ny, nz);
+        return {area * std::abs(t.cosine) / (std::numbers::pi_v<float> * t.distance2),
+                t.cosine > 0};
     }
 
     // Builds the subtree over members_[first, first + count) and returns its node.

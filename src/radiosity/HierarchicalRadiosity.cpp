@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <limits>
 #include <numeric>
 
 #include "math/ColorLanes.h"
@@ -88,18 +87,15 @@ std::array<Vec3, 3> quadraturePoints(const std::array<Vec3, 3>& t) {
 }
 
 // receivedShare() from (tx, ty, tz), the vector from the element's centroid to the source's
-// centre, and the element's normal n. The smallest normal float added to the squared distance
-// changes none of 1e-15 or more, and makes the cosine, so the share, 0 at the centre itself
-// without a branch: clusterLinksAt runs this in SIMD lanes, which the compiler does only where
-// nothing decides whether a division runs.
+// centre, and the element's normal n: 0 at the centre itself (see ClusterHierarchy::toward;
+// clusterLinksAt runs this in SIMD lanes).
 struct Share {
     float fraction;
     bool front;
 };
 Share shareToward(float tx, float ty, float tz, const Vec3& n, float linkDistance2) {
-    const float d2 = tx * tx + ty * ty + tz * tz + std::numeric_limits<float>::min();
-    const float cosine = (n.x * tx + n.y * ty + n.z * tz) / std::sqrt(d2);
-    return {std::abs(cosine) * linkDistance2 / d2, cosine > 0};
+    const ClusterHierarchy::Toward t = ClusterHierarchy::toward(tx, ty, tz, n.x, n.y, n.z);
+    return {std::abs(t.cosine) * linkDistance2 / t.distance2, t.cosine > 0};
 }
 
 }  // namespace

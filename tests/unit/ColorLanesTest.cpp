@@ -63,10 +63,12 @@ TEST(ColorArraysTest, KeepsEachChannelInItsArray) {
     ColorArrays colors;
     colors.resize(3);
     colors.set(1, Color(1, 2, 3));
-    EXPECT_EQ(colors.size(), 3u);
-    EXPECT_EQ(colors[1], Color(1, 2, 3));
-    EXPECT_EQ(colors[0], Color(0));
-    EXPECT_EQ(colors.g[1], 2.0f);
+    for (const std::vector<float>* channel : {&colors.r, &colors.g, &colors.b}) {
+        EXPECT_EQ(channel->size(), 3u);
+        EXPECT_EQ((*channel)[0], 0.0f);
+        EXPECT_EQ((*channel)[2], 0.0f);
+    }
+    EXPECT_EQ(Color(colors.r[1], colors.g[1], colors.b[1]), Color(1, 2, 3));
 }
 
 }  // namespace
