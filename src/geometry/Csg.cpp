@@ -5,6 +5,8 @@
 #include <limits>
 #include <utility>
 
+#include "math/Float4.h"
+
 namespace lancer {
 
 namespace {
@@ -54,40 +56,42 @@ private:
 thread_local std::vector<std::unique_ptr<Sweep>> SweepLease::pool_;
 thread_local std::size_t SweepLease::level_ = 0;
 
-// The part tLow < t < tHigh of a ray's line, tested against boxes by the BVH's slab test (the
-// boxes are padded far beyond its rounding). The reciprocal of the direction, and the corner of a
-// box the line enters by, are found once for all the children of a query.
+// The part tLow < t < tHigh of a ray's line, tested against the children's boxes four at a time
+// by the BVH's slab test (the boxes are padded far beyond its rounding). The reciprocal of the
+// direction, and which side of a box the line enters by, are found once for all the children of
+// a query.
 class LineWindow {
 public:
     LineWindow(const Ray& ray, double tLow, double tHigh)
         : tLow_(static_cast<float>(tLow)), tHigh_(static_cast<float>(tHigh)) {
         for (int axis = 0; axis < 3; ++axis) {
-            origin_[axis] = ray.origin[axis];
+            origin_[axis] = Float4(ray.origin[axis]);
             // A zero component gives an infinite reciprocal of the zero's sign.
-            inverse_[axis] = 1.0f / ray.direction[axis];
-            entryIsMax_[axis] = inverse_[axis] < 0;
+            const float inverse = 1.0f / ray.direction[axis];
+            inverse_[axis] = Float4(inverse);
+            entrySide_[axis] = inverse < 0 ? 1 : 0;
         }
     }
 
-    // Whether the line passes through the box somewhere in the window.
-    bool meets(const Bounds3& box) const {
-        float tEnter = tLow_, tExit = tHigh_;
+    // Bit i: whether the line passes through the group's box i somewhere in the window.
+    int meets(const Csg::BoxGroup& boxes) const {
+        Float4 tEnter = tLow_, tExit = tHigh_;
         for (int axis = 0; axis < 3; ++axis) {
-            const float entry = (entryIsMax_[axis] ? box.max : box.min)[axis];
-            const float exit = (entryIsMax_[axis] ? box.min : box.max)[axis];
-            const float tNear = (entry - origin_[axis]) * inverse_[axis];
-            const float tFar = (exit - origin_[axis]) * inverse_[axis];
-            // NaN (0 * infinity: the line in a slab's plane) leaves the window unchanged.
-            tEnter = tNear > tEnter ? tNear : tEnter;
-            tExit = tFar < tExit ? tFar : tExit;
+            // Indexed, not chosen by a branch: the sides change from ray to ray.
+            const float* entry = boxes.corners[entrySide_[axis]][axis];
+            const float* exit = boxes.corners[1 - entrySide_[axis]][axis];
+            // NaN (0 * infinity: the line in a slab's plane) leaves the window unchanged, as
+            // max and min keep their first operand then.
+            tEnter = max(tEnter, (Float4::load(entry) - origin_[axis]) * inverse_[axis]);
+            tExit = min(tExit, (Float4::load(exit) - origin_[axis]) * inverse_[axis]);
         }
-        return tEnter <= tExit;
+        return le(tEnter, tExit);
     }
 
 private:
-    float origin_[3], inverse_[3];
-    bool entryIsMax_[3];
-    float tLow_, tHigh_;
+    Float4 origin_[3], inverse_[3];
+    int entrySide_[3];  // of the boxes: 1 where the line enters by the larger corner
+    Float4 tLow_, tHigh_;
 };
 
 }  // namespace
@@ -102,7 +106,12 @@ Csg::Csg(Operation operation, std::vector<std::unique_ptr<Shape>> children,
         // box test turns away never had a crossing to give.
         const Bounds3 b = child->bounds();
         const Vec3 pad = 1e-5f * (b.max - b.min) + 1e-6f * max(abs(b.min), abs(b.max));
-        childBounds_.push_back({b.min - pad, b.max + pad});
+        const std::size_t k = &child - children_.data();
+        if (k % 4 == 0) childBoxes_.emplace_back();  // its empty boxes meet no line
+        for (int axis = 0; axis < 3; ++axis) {
+            childBoxes_.back().corners[0][axis][k % 4] = b.min[axis] - pad[axis];
+            childBoxes_.back().corners[1][axis][k % 4] = b.max[axis] + pad[axis];
+        }
     }
     bounds_ = children_.front()->bounds();
     for (std::size_t k = 1; k < children_.size(); ++k) {
@@ -160,11 +169,13 @@ void Csg::sweepLine(const Ray& ray, double tFrom, double tTo, Visit&& visit) con
     events.clear();
     order.clear();
     const LineWindow window(ray, tFrom, tTo);
+    int meets = 0;
     for (std::size_t k = 0; k < children_.size(); ++k) {
+        if (k % 4 == 0) meets = window.meets(childBoxes_[k / 4]);
         const std::size_t first = events.size();
         // A child the line meets only before tFrom or after tTo is outside all along the
         // window: its crossings change nothing there.
-        if (window.meets(childBounds_[k])) children_[k]->crossLine(ray, events);
+        if (meets >> (k % 4) & 1) children_[k]->crossLine(ray, events);
         // Nothing of an intersection, or of a difference, lies off its first child.
         if (events.size() == first && (operation_ == Operation::kIntersection ||
                                        (operation_ == Operation::kDifference && k == 0)))

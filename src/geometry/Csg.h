@@ -26,6 +26,17 @@ public:
         const Material* material);
     static const std::vector<std::string>& operationNames();
 
+    // The boxes of four children, a little larger than theirs: corners[0] the smaller corners,
+    // corners[1] the larger, by axis and child (an empty box where there is no child).
+    struct BoxGroup {
+        alignas(16) float corners[2][3][4] = {{{kInfinity, kInfinity, kInfinity, kInfinity},
+                                               {kInfinity, kInfinity, kInfinity, kInfinity},
+                                               {kInfinity, kInfinity, kInfinity, kInfinity}},
+                                              {{-kInfinity, -kInfinity, -kInfinity, -kInfinity},
+                                               {-kInfinity, -kInfinity, -kInfinity, -kInfinity},
+                                               {-kInfinity, -kInfinity, -kInfinity, -kInfinity}}};
+    };
+
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
     Bounds3 bounds() const override { return bounds_; }
@@ -66,7 +77,7 @@ private:
     Operation operation_;
     std::vector<std::unique_ptr<Shape>> children_;
     std::vector<std::uint32_t> firstPrimitive_;  // per child, and the total at the end
-    std::vector<Bounds3> childBounds_;           // a little larger than the children's
+    std::vector<BoxGroup> childBoxes_;           // children 4k to 4k + 3 in group k
     Bounds3 bounds_;
     float diagonalLength_;  // of bounds_, which the rounding of crossings' t grows with
 };
