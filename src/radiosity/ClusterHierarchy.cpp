@@ -101,8 +101,8 @@ ClusterHierarchy::Extent ClusterHierarchy::extent(const RadiosityMesh& mesh,
     return {e.centroid, radius};
 }
 
-Color ClusterHierarchy::irradianceAt(std::uint32_t node, const Vec3& at,
-                                     const MemberRadiosities& radiosities) const {
+LANCER_ALWAYS_INLINE Color ClusterHierarchy::memberSum(std::uint32_t node, const Vec3& at,
+                                                       const MemberRadiosities& radiosities) const {
     const Cluster& c = cluster(node);
     const MemberShapes& m = memberShapes_;
     const ColorArrays& front = radiosities[sideIndex(Side::Front)];
@@ -118,6 +118,21 @@ Color ClusterHierarchy::irradianceAt(std::uint32_t node, const Vec3& at,
             sum.add(lane, t.weight, t.front ? fr : br, t.front ? fg : bg, t.front ? fb : bb);
         });
     return sum.total();
+}
+
+#if LANCER_HAS_AVX2_TARGET
+Color ClusterHierarchy::memberSumAvx2(std::uint32_t node, const Vec3& at,
+                                      const MemberRadiosities& radiosities) const {
+    return memberSum(node, at, radiosities);
+}
+#endif
+
+Color ClusterHierarchy::irradianceAt(std::uint32_t node, const Vec3& at,
+                                     const MemberRadiosities& radiosities) const {
+#if LANCER_HAS_AVX2_TARGET
+    if (CpuFeatures::avx2()) return memberSumAvx2(node, at, radiosities);
+#endif
+    return memberSum(node, at, radiosities);
 }
 
 Color ClusterHierarchy::irradianceAt(const Element& e, const Vec3& at,

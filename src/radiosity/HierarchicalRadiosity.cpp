@@ -448,8 +448,8 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
     return d;
 }
 
-std::array<Color, 2> HierarchicalRadiosity::clusterLinksAt(const Element& at, std::uint32_t leaf,
-                                                           const ColorArrays& perLink) const {
+LANCER_ALWAYS_INLINE std::array<Color, 2> HierarchicalRadiosity::linkSums(
+    const Element& at, std::uint32_t leaf, const ColorArrays& perLink) const {
     // receivedShare() for each link the leaf takes, in SIMD lanes: the links of one receiver are
     // one range of arrays. Each term goes to the front's sum or the back's.
     const ReceivedLinks& links = received_;
@@ -476,6 +476,21 @@ std::array<Color, 2> HierarchicalRadiosity::clusterLinksAt(const Element& at, st
     E[sideIndex(Side::Front)] = front.total();
     E[sideIndex(Side::Back)] = back.total();
     return E;
+}
+
+#if LANCER_HAS_AVX2_TARGET
+std::array<Color, 2> HierarchicalRadiosity::linkSumsAvx2(const Element& at, std::uint32_t leaf,
+                                                         const ColorArrays& perLink) const {
+    return linkSums(at, leaf, perLink);
+}
+#endif
+
+std::array<Color, 2> HierarchicalRadiosity::clusterLinksAt(const Element& at, std::uint32_t leaf,
+                                                           const ColorArrays& perLink) const {
+#if LANCER_HAS_AVX2_TARGET
+    if (CpuFeatures::avx2()) return linkSumsAvx2(at, leaf, perLink);
+#endif
+    return linkSums(at, leaf, perLink);
 }
 
 std::vector<std::array<Color, 2>> HierarchicalRadiosity::gatherThroughClusters(

@@ -182,6 +182,14 @@ private:
     // see receivedShare().
     std::array<Color, 2> clusterLinksAt(const Element& at, std::uint32_t leaf,
                                         const ColorArrays& perLink) const;
+    // Its sums, compiled for the baseline and for AVX2 (the same bits: the same operations lane
+    // by lane).
+    LANCER_ALWAYS_INLINE std::array<Color, 2> linkSums(const Element& at, std::uint32_t leaf,
+                                                       const ColorArrays& perLink) const;
+#if LANCER_HAS_AVX2_TARGET
+    LANCER_AVX2_TARGET std::array<Color, 2> linkSumsAvx2(const Element& at, std::uint32_t leaf,
+                                                         const ColorArrays& perLink) const;
+#endif
     // The same at every leaf (indexed by element).
     std::vector<std::array<Color, 2>> gatherThroughClusters(const ColorArrays& perLink) const;
     // What a node (an element or a cluster) delivers at `at` at normal incidence, from the
@@ -216,7 +224,9 @@ private:
     Color gatherFrom(const Element& at, const Link& link, std::uint32_t source, std::uint64_t key,
                      std::uint64_t& rayCount) const;
     RadiosityStatistics statistics(std::size_t leaves) const;
-    bool cancelled() const { return cancel_ && cancel_->load(std::memory_order_relaxed); }
+    bool cancelled() const {
+        return cancel_ && cancel_->load(std::memory_order_relaxed);
+    }
 
     const Scene& scene_;
     RadiositySettings settings_;

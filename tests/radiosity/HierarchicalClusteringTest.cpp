@@ -5,10 +5,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 
 #include "RadiosityTestSupport.h"
 #include "radiosity/FormFactor.h"
 #include "radiosity/HierarchicalRadiosity.h"
+#include "util/CpuFeatures.h"
 
 namespace lancer::test {
 namespace {
@@ -131,6 +133,27 @@ TEST(HierarchicalClusteringTest, TheLinkCountGrowsNearLinearly) {
     }
     // Measured: 29,555, 134,729 and 376,097 links.
     EXPECT_LT(links[2], 1.5 * 4 * links[1]);
+}
+
+TEST(HierarchicalClusteringTest, TheAvx2SumsGiveTheBaselinesBits) {
+    // The cluster sums (a cluster's members at a point, the cluster links a leaf takes) run in
+    // AVX2 where the CPU has it: the solution must be the baseline's to the bit.
+    if (!CpuFeatures::avx2()) GTEST_SKIP() << "no AVX2 on this CPU: only the baseline runs";
+    Scene scene = tiledBox(8);
+    std::array<std::vector<std::array<Color, 2>>, 2> solutions;
+    for (const bool baseline : {false, true}) {
+        CpuFeatures::useBaselineOnly(baseline);
+        HierarchicalRadiosity solver(scene);
+        const bool solved = solver.solve({}, nullptr).has_value();
+        CpuFeatures::useBaselineOnly(false);
+        ASSERT_TRUE(solved);
+        ASSERT_GT(solver.clusterLinks().size(), 0u);
+        solutions[baseline] = solver.radiosity();
+    }
+    ASSERT_EQ(solutions[0].size(), solutions[1].size());
+    EXPECT_EQ(std::memcmp(solutions[0].data(), solutions[1].data(),
+                          solutions[0].size() * sizeof(solutions[0][0])),
+              0);
 }
 
 }  // namespace
