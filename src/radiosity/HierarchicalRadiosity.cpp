@@ -664,12 +664,19 @@ std::vector<HierarchicalRadiosity::Candidate> HierarchicalRadiosity::relink() {
     // A pair whose link on one side stayed would be linked twice on that side: drop those links.
     for (const Candidate& c : candidates)
         std::erase_if(links_[c.receiver], [&](const Link& l) { return l.source == c.source; });
-    if (!full_)
+    if (!full_) {
+        // Judged in parallel (each sums its source's members), taken apart in order.
+        std::vector<char> tooMuch(clusterLinks_.size());
+        parallelFor(clusterLinks_.size(), 1024, [&](std::size_t i) {
+            tooMuch[i] = clusterLinkError(clusterLinks_[i]) > epsilon_;
+        });
+        std::size_t i = 0;
         std::erase_if(clusterLinks_, [&](const ClusterLink& link) {
-            if (clusterLinkError(link) <= epsilon_) return false;
+            if (!tooMuch[i++]) return false;
             candidates.push_back({link.receiver, link.source});
             return true;
         });
+    }
     return candidates;
 }
 
