@@ -99,14 +99,6 @@ private:
     std::uint64_t left_ = 0;
 };
 
-// The MTL files as they are now (a missing one counts by its path).
-std::uint64_t librariesFingerprint(const fs::path& objPath, const ObjCompletion& completion) {
-    Fingerprint fingerprint;
-    for (const fs::path& library : ObjLoader::libraryPaths(objPath, completion))
-        fingerprint.addFile(library);
-    return fingerprint.value();
-}
-
 }  // namespace
 
 ModelCache::ModelCache(fs::path folder, std::string programIdentity, std::uintmax_t minimumBytes,
@@ -147,7 +139,8 @@ fs::path ModelCache::entryPath(const fs::path& modelPath,
 }
 
 std::uint64_t ModelCache::modelFingerprint(const fs::path& modelPath,
-                                           const std::optional<float>& smooth) const {
+                                           const std::optional<float>& smooth,
+                                           std::uint64_t modelFile) const {
     return Fingerprint()
         .addText(programIdentity_)
         .addNumber(sizeof(Vec3))
@@ -155,7 +148,7 @@ std::uint64_t ModelCache::modelFingerprint(const fs::path& modelPath,
         .addNumber(sizeof(TrianglePack))
         // The path as given, which the warnings kept in the entry name.
         .addText(modelPath.string())
-        .addFile(modelPath)
+        .addNumber(modelFile)
         .addNumber(smooth ? std::bit_cast<std::uint32_t>(*smooth) : ~0u)
         .value();
 }
@@ -178,10 +171,13 @@ std::shared_ptr<const Mesh> ModelCache::findObj(const fs::path& objPath,
                  "not a lancer model cache entry; the model is read from its file");
             return nullptr;
         }
-        if (reader.read<std::uint64_t>() != modelFingerprint(objPath, smooth)) return nullptr;
+        const auto madeFromModel = reader.read<std::uint64_t>();
         ObjCompletion completion;
         completion.libraryNames = reader.readTexts();
-        if (reader.read<std::uint64_t>() != librariesFingerprint(objPath, completion))
+        const auto madeFromLibraries = reader.read<std::uint64_t>();
+        const ObjLoader::SourceFiles now = ObjLoader::sourceFiles(objPath, completion);
+        if (madeFromModel != modelFingerprint(objPath, smooth, now.obj) ||
+            madeFromLibraries != now.libraries)
             return nullptr;
         completion.materialSources = reader.readArray<int>();
         completion.warningsBeforeMaterials = reader.readTexts();
@@ -242,16 +238,16 @@ void ModelCache::makeRoomBeside(const fs::path& newest) const {
 }
 
 void ModelCache::storeObj(const fs::path& objPath, const std::optional<float>& smooth,
-                          const ObjCompletion& completion, const Mesh& mesh,
-                          std::vector<std::string>& warnings) const {
+                          const ObjCompletion& completion, const ObjLoader::SourceFiles& sources,
+                          const Mesh& mesh, std::vector<std::string>& warnings) const {
     if (!keeps(objPath)) return;
     const TriangleMesh& triangles = mesh.triangles();
     std::string bytes(kMagic, sizeof kMagic);
     // The arrays' bytes, with room for the rest: the entry is built in place, never moved.
     bytes.reserve(mesh.memoryBytes() + (std::size_t{1} << 16));
-    appendBytes(bytes, modelFingerprint(objPath, smooth));
+    appendBytes(bytes, modelFingerprint(objPath, smooth, sources.obj));
     appendTexts(bytes, completion.libraryNames);
-    appendBytes(bytes, librariesFingerprint(objPath, completion));
+    appendBytes(bytes, sources.libraries);
     appendArray(bytes, std::span<const int>(completion.materialSources));
     appendTexts(bytes, completion.warningsBeforeMaterials);
     appendTexts(bytes, completion.warningsAfterMaterials);

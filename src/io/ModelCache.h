@@ -53,11 +53,13 @@ public:
                                         std::vector<std::string>& warnings,
                                         std::vector<std::filesystem::path>& materialFiles) const;
     // Keeps `mesh`, built from the OBJ model at `objPath` (ObjLoader::readGeometry's result,
-    // smoothed by `smooth` degrees) and completed by `completion`. A failure to write the entry
-    // adds a warning and leaves no file.
+    // smoothed by `smooth` degrees) and completed by `completion`, read from the files as
+    // `sources` found them before reading them (so that an entry never passes for files that
+    // changed while they were read). A failure to write the entry adds a warning and leaves no
+    // file.
     void storeObj(const std::filesystem::path& objPath, const std::optional<float>& smooth,
-                  const ObjCompletion& completion, const Mesh& mesh,
-                  std::vector<std::string>& warnings) const;
+                  const ObjCompletion& completion, const ObjLoader::SourceFiles& sources,
+                  const Mesh& mesh, std::vector<std::string>& warnings) const;
 
 private:
     bool keeps(const std::filesystem::path& modelPath) const;
@@ -66,9 +68,11 @@ private:
     void makeRoomBeside(const std::filesystem::path& newest) const;
     std::filesystem::path entryPath(const std::filesystem::path& modelPath,
                                     const std::optional<float>& smooth) const;
-    // What the entry of a model must have been made from, besides its MTL files.
+    // What the entry of a model must have been made from, besides its MTL files: this build,
+    // the smoothing, and the model's file (its Fingerprint::addFile).
     std::uint64_t modelFingerprint(const std::filesystem::path& modelPath,
-                                   const std::optional<float>& smooth) const;
+                                   const std::optional<float>& smooth,
+                                   std::uint64_t modelFile) const;
 
     std::filesystem::path folder_;
     std::string programIdentity_;

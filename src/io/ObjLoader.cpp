@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "geometry/PolygonTriangulator.h"
+#include "io/Fingerprint.h"
 #include "io/InputFile.h"
 #include "io/MtlMaterialConverter.h"
 #include "io/ObjSupport.h"
@@ -59,6 +60,7 @@ public:
                     std::string* mtlErrors) override {
         tried_.push_back(name);
         const fs::path path = resolvePath(objFolder_, name);
+        triedFiles_.addFile(path);  // before reading it, as sourceFiles() sees it
         try {
             InputFile::check(path, "an MTL file", "MTL files", InputFile::kMaxModelBytes);
         } catch (const InputError& e) {
@@ -83,6 +85,7 @@ public:
     const std::vector<fs::path>& missingFiles() const { return missing_; }
     const fs::path& fileOf(std::size_t material) const { return files_[material]; }
     const std::vector<fs::path>& filesRead() const { return read_; }
+    std::uint64_t triedFilesFingerprint() const { return triedFiles_.value(); }
 
 private:
     fs::path objFolder_;
@@ -90,6 +93,7 @@ private:
     std::vector<fs::path> missing_;
     std::vector<fs::path> files_;  // per material
     std::vector<fs::path> read_;
+    Fingerprint triedFiles_;
 };
 
 struct ObjContents {
@@ -372,6 +376,8 @@ private:
 }  // namespace
 
 ObjLoader::Geometry ObjLoader::readGeometry(const fs::path& objPath) {
+    SourceFiles sources;
+    sources.obj = Fingerprint().addFile(objPath).value();
     std::ifstream file = openObj(objPath);
     ObjContents obj = parseObj(file, objPath, /*triangulate=*/false);
     ObjCompletion completion;
@@ -386,6 +392,7 @@ ObjLoader::Geometry ObjLoader::readGeometry(const fs::path& objPath) {
     const ParserFindings findings = readParserWarnings(obj.parserWarnings);
     reportMaterialProblems(obj, findings, objPath, completion.warningsBeforeMaterials);
     completion.libraryNames = obj.libraries.namesTried();
+    sources.libraries = obj.libraries.triedFilesFingerprint();
 
     MeshBuilder builder(obj, completion.materialSources);
     builder.addShortFaces(findings.shortFaces);
@@ -402,7 +409,7 @@ ObjLoader::Geometry ObjLoader::readGeometry(const fs::path& objPath) {
     }
     std::shared_ptr<TriangleMesh> triangles =
         builder.finish(objPath, completion.warningsAfterMaterials);
-    return {std::move(triangles), std::move(completion)};
+    return {std::move(triangles), std::move(completion), sources};
 }
 
 std::vector<std::shared_ptr<const Material>> ObjLoader::complete(
@@ -436,12 +443,13 @@ std::vector<std::shared_ptr<const Material>> ObjLoader::complete(
     return materials;
 }
 
-std::vector<fs::path> ObjLoader::libraryPaths(const fs::path& objPath,
+ObjLoader::SourceFiles ObjLoader::sourceFiles(const fs::path& objPath,
                                               const ObjCompletion& completion) {
-    std::vector<fs::path> paths;
+    // As readGeometry and MaterialLibraries fingerprint them.
+    Fingerprint libraries;
     for (const std::string& name : completion.libraryNames)
-        paths.push_back(resolvePath(objPath.parent_path(), name));
-    return paths;
+        libraries.addFile(resolvePath(objPath.parent_path(), name));
+    return {Fingerprint().addFile(objPath).value(), libraries.value()};
 }
 
 std::shared_ptr<TriangleMesh> ObjLoader::load(const fs::path& objPath,

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -32,6 +33,13 @@ public:
         std::vector<std::string>& warnings,
         std::vector<std::filesystem::path>* materialFiles = nullptr);
 
+    // The files a model is read from, each by its path, size and time of change
+    // (Fingerprint::addFile): the OBJ, and the MTL files its libraries name, found or not.
+    struct SourceFiles {
+        std::uint64_t obj = 0;
+        std::uint64_t libraries = 0;
+    };
+
     // load() in its two steps, so that the model cache can keep the first one's result: the
     // triangles (their faces' material indices set, their materials not made yet) and what
     // completes them, which complete() then turns into the materials, adding the reading's
@@ -39,16 +47,18 @@ public:
     struct Geometry {
         std::shared_ptr<TriangleMesh> triangles;
         ObjCompletion completion;
+        // Each file as it was just before it was read: a file changed while the model was read
+        // then differs from it, and is never taken for the file the geometry came from.
+        SourceFiles sources;
     };
     static Geometry readGeometry(const std::filesystem::path& objPath);
     static std::vector<std::shared_ptr<const Material>> complete(
         const std::filesystem::path& objPath, const ObjCompletion& completion,
         const TextureLoader& loadTexture, std::vector<std::string>& warnings,
         std::vector<std::filesystem::path>* materialFiles = nullptr);
-    // The MTL files that the libraries of `completion` name, found or not: what the model also
-    // depends on.
-    static std::vector<std::filesystem::path> libraryPaths(const std::filesystem::path& objPath,
-                                                           const ObjCompletion& completion);
+    // The files of the model at `objPath` completed by `completion`, as they are now.
+    static SourceFiles sourceFiles(const std::filesystem::path& objPath,
+                                   const ObjCompletion& completion);
 };
 
 }  // namespace lancer

@@ -990,7 +990,8 @@ SceneLoader::Reader::Shapes SceneLoader::Reader::loadMeshObject(
                 path, geometry.completion, loadTexture, warnings_, &materialFiles);
             mesh = builtMesh(std::move(geometry.triangles), smooth);
             if (modelCache_)
-                modelCache_->storeObj(path, smooth, geometry.completion, *mesh, warnings_);
+                modelCache_->storeObj(path, smooth, geometry.completion, geometry.sources, *mesh,
+                                      warnings_);
         }
         for (const std::filesystem::path& file : materialFiles)
             scene_.addSourceFile(file);

@@ -52,7 +52,7 @@ struct CachedModel {
         geometry.triangles->materials =
             lancer::ObjLoader::complete(obj, geometry.completion, noTexture(), warnings);
         const lancer::Mesh mesh(std::move(*geometry.triangles));
-        cache.storeObj(obj, std::nullopt, geometry.completion, mesh, warnings);
+        cache.storeObj(obj, std::nullopt, geometry.completion, geometry.sources, mesh, warnings);
         entry = fs::directory_iterator(lancer::fuzz::FuzzFolder::path() / "cache")->path();
         std::ifstream in(entry, std::ios::binary);
         header.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());

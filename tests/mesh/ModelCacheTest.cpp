@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cstring>
 #include <fstream>
+#include <functional>
 
 #include "MeshTestSupport.h"
 #include "accel/Mesh.h"
@@ -55,17 +56,20 @@ protected:
     }
 
     // The model read and built from its file, as the scene loader does without an entry; kept in
-    // `cache` when given.
+    // `cache` when given. `meanwhile` runs once the files are read, before the model is kept.
     std::shared_ptr<const Mesh> build(const ModelCache* cache,
-                                      const std::optional<float>& smooth = std::nullopt) {
+                                      const std::optional<float>& smooth = std::nullopt,
+                                      const std::function<void()>& meanwhile = {}) {
         warnings_.clear();
         materialFiles_.clear();
         ObjLoader::Geometry geometry = ObjLoader::readGeometry(obj_);
+        if (meanwhile) meanwhile();
         geometry.triangles->materials = ObjLoader::complete(
             obj_, geometry.completion, textures_.loader(), warnings_, &materialFiles_);
         if (smooth) SmoothingByAngle::apply(*geometry.triangles, *smooth);
         auto mesh = std::make_shared<const Mesh>(std::move(*geometry.triangles));
-        if (cache) cache->storeObj(obj_, smooth, geometry.completion, *mesh, warnings_);
+        if (cache)
+            cache->storeObj(obj_, smooth, geometry.completion, geometry.sources, *mesh, warnings_);
         return mesh;
     }
 
@@ -167,6 +171,21 @@ TEST_F(ModelCacheTest, AChangedModelOrMaterialFileOrProgramIsReadAgain) {
     // The OBJ changed (a size of its own, so that a coarse clock cannot hide it).
     std::ofstream(obj_, std::ios::app) << "# one more line\n";
     EXPECT_EQ(find(models), nullptr);
+}
+
+TEST_F(ModelCacheTest, AFileChangedWhileTheModelWasReadLeavesNoEntryForTheNewFile) {
+    // As when an exporter finishes writing the model while it is read: the entry holds the old
+    // triangles or materials, and must not pass for the files as they are afterwards.
+    const ModelCache models = cache();
+    build(&models, std::nullopt, [&] { std::ofstream(obj_, std::ios::app) << "# meanwhile\n"; });
+    EXPECT_EQ(find(models), nullptr);
+    build(&models, std::nullopt, [&] { folder_.write("grid.mtl", "newmtl red\nKd 0 0 1\n"); });
+    EXPECT_EQ(find(models), nullptr);
+    // Unchanged since, the files are read and kept again, and the entry is then taken.
+    const std::shared_ptr<const Mesh> rebuilt = build(&models);
+    const std::shared_ptr<const Mesh> found = find(models);
+    ASSERT_NE(found, nullptr);
+    expectSameMesh(*rebuilt, *found);
 }
 
 TEST_F(ModelCacheTest, SmallModelsAreNotKept) {
