@@ -5,11 +5,13 @@
 #include <tbb/global_control.h>
 #include <CLI/CLI.hpp>
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <cmath>
 #include <csignal>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <initializer_list>
 #include <iostream>
@@ -55,6 +57,7 @@ struct Options {
     std::string scene;
     std::string output;
     std::optional<int> width, height, spp, maxDepth;
+    std::optional<float> adcBailout;
     std::optional<std::string> integrator;
     int threads = 0;
     std::uint64_t seed = 0;
@@ -360,6 +363,7 @@ std::uint64_t renderFingerprint(const Scene& scene, const RenderOptions& renderO
         .addNumber(static_cast<std::uint64_t>(settings.height))
         .addNumber(static_cast<std::uint64_t>(settings.samplesPerPixel))
         .addNumber(static_cast<std::uint64_t>(settings.maxDepth))
+        .addNumber(std::bit_cast<std::uint32_t>(settings.adcBailout))
         .addText(settings.integrator)
         .addNumber(renderOptions.seed)
         .addNumber(static_cast<std::uint64_t>(frame));
@@ -380,6 +384,7 @@ int renderImage(const Options& options, Cluster& cluster, Scene scene, const fs:
     if (options.height) settings.height = *options.height;
     if (options.spp) settings.samplesPerPixel = *options.spp;
     if (options.maxDepth) settings.maxDepth = *options.maxDepth;
+    if (options.adcBailout) settings.adcBailout = *options.adcBailout;
     if (options.integrator) settings.integrator = *options.integrator;
     // The image's buffers are allocated before the render starts, and all at once: refuse an
     // image that cannot fit before the first of them (or the radiosity solve) takes its time.
@@ -703,6 +708,19 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, RenderSettings::kMaxSamplesPerPixel));
     app.add_option("--max-depth", options.maxDepth, "Recursion depth (overrides the scene)")
         ->check(CLI::Range(0, RenderSettings::kMaxDepthLimit));
+    app.add_option("--adc-bailout", options.adcBailout,
+                   "Whitted and radiosity: leave the reflected and refracted rays that would carry "
+                   "less than this fraction of their light to the pixel, 0 to 1 (overrides the "
+                   "scene; POV-Ray's adc_bailout)")
+        ->check(CLI::Validator(
+            [](const std::string& text) {
+                char* end = nullptr;
+                const double value = std::strtod(text.c_str(), &end);
+                return *end == '\0' && value >= 0 && value <= 1
+                           ? std::string()
+                           : "the bailout must be a number from 0 to 1, got " + text;
+            },
+            ""));
     app.add_option("--integrator", options.integrator,
                    IntegratorRegistry::table().quotedNames() + " (overrides the scene)")
         ->check(CLI::Validator(

@@ -16,7 +16,10 @@
 namespace lancer {
 
 WhittedIntegrator::WhittedIntegrator(const Scene& scene, int maxDepth, Bsdf::Weights weights)
-    : scene_(scene), maxDepth_(maxDepth), weights_(weights) {}
+    : scene_(scene),
+      maxDepth_(maxDepth),
+      adcBailout_(scene.settings().adcBailout),
+      weights_(weights) {}
 
 std::unique_ptr<Integrator> WhittedIntegrator::create(const Scene& scene, const IntegratorSetup&) {
     return std::make_unique<WhittedIntegrator>(scene, scene.settings().maxDepth);
@@ -24,7 +27,7 @@ std::unique_ptr<Integrator> WhittedIntegrator::create(const Scene& scene, const 
 
 Color WhittedIntegrator::radiance(const Ray& ray, const RayCone& footprint, Sampler& sampler,
                                   std::uint64_t& rayCount) const {
-    return trace({ray, 0, footprint}, 0, sampler, rayCount);
+    return trace({ray, 0, footprint, Color(1)}, 0, sampler, rayCount);
 }
 
 namespace {
@@ -68,8 +71,11 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     if (depth >= maxDepth_) return L;
 
     const auto traceFurther = [&](const SpecularRay& r) {
-        return r.weight * trace({hit.spawnRay(r.direction), distance, path.footprint}, depth + 1,
-                                sampler, rayCount);
+        const Color weight = path.weight * r.weight;
+        // Adaptive depth control: a ray that could not change the pixel by the bailout is left.
+        if (weight.maxComponent() < adcBailout_) return Color(0);
+        return r.weight * trace({hit.spawnRay(r.direction), distance, path.footprint, weight},
+                                depth + 1, sampler, rayCount);
     };
     std::array<SpecularRay, Bsdf::kMaxSpecularRays> rays;
     const std::size_t count = bsdf.specularRays(wo, front, rays);

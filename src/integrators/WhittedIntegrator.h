@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "materials/Bsdf.h"
+#include "math/Color.h"
 #include "render/Integrator.h"
 
 namespace lancer {
@@ -36,12 +37,15 @@ protected:
     const Scene& scene() const { return scene_; }
 
 private:
-    // A ray of the path from the camera, with what texture filtering needs to know of the path:
-    // the distance travelled before this ray and the pixel's footprint along the path.
+    // A ray of the path from the camera, with what texture filtering needs to know of the path
+    // (the distance travelled before this ray and the pixel's footprint along the path) and the
+    // fraction of the ray's radiance that reaches the pixel (the product of the weights of the
+    // rays before it).
     struct PathRay {
         Ray ray;
         float distance;
         RayCone footprint;
+        Color weight;
     };
 
     Color trace(const PathRay& path, int depth, Sampler& sampler, std::uint64_t& rayCount) const;
@@ -50,6 +54,7 @@ private:
 
     const Scene& scene_;
     int maxDepth_;
+    float adcBailout_;  // RenderSettings::adcBailout
     Bsdf::Weights weights_;
 };
 

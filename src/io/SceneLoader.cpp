@@ -641,8 +641,8 @@ void SceneLoader::Reader::loadContents(const Node& fragment) {
 void SceneLoader::Reader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
     checkKeys(node, "\"render\"",
-              {"width", "height", "spp", "max_depth", "integrator", "filter", "adaptive",
-               "exposure", "tonemap", "clamp"});
+              {"width", "height", "spp", "max_depth", "adc_bailout", "integrator", "filter",
+               "adaptive", "exposure", "tonemap", "clamp"});
     RenderSettings& settings = scene_.settings();
     if (node.has("width"))
         settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
@@ -652,6 +652,12 @@ void SceneLoader::Reader::loadRender(const Node& node) {
         settings.samplesPerPixel = readInt(node["spp"], 1, RenderSettings::kMaxSamplesPerPixel);
     if (node.has("max_depth"))
         settings.maxDepth = readInt(node["max_depth"], 0, RenderSettings::kMaxDepthLimit);
+    if (node.has("adc_bailout")) {
+        const Node bailout = node["adc_bailout"];
+        settings.adcBailout = readNumber(bailout);
+        if (!(settings.adcBailout >= 0 && settings.adcBailout <= 1))
+            fail(bailout, "\"adc_bailout\" must be between 0 and 1");
+    }
     if (node.has("integrator")) {
         settings.integrator =
             lookUp(IntegratorRegistry::table(), node["integrator"], "integrator").name;

@@ -30,6 +30,10 @@ struct RenderSettings {
     int height = 480;
     int samplesPerPixel = 16;  // with adaptive sampling, the most a pixel may take
     int maxDepth = 5;
+    // whitted and radiosity: a reflected or refracted ray that would carry less than this of its
+    // radiance to the pixel, in every channel, is not traced (POV-Ray's adaptive depth control),
+    // 0 to 1. 0: every ray is traced, up to maxDepth.
+    float adcBailout = 0;
     std::string integrator = "whitted";
     FilterSettings filter;                     // the reconstruction filter
     std::optional<AdaptiveSettings> adaptive;  // none: every pixel takes samplesPerPixel

@@ -273,6 +273,64 @@ INSTANTIATE_TEST_SUITE_P(Cases, CliMirrorSphere,
                                          MirrorCase{"MaxDepth1Reflects", 0.25, 1}),
                          CaseName());
 
+// --- Adaptive depth control ---
+
+// Two mirrors in turn: the camera sees mirror A, which sends every ray to mirror B, which sends
+// it up into the background. Nothing is lit, so each pixel is kr_A kr_B times the background
+// when the ray off B is traced, and black when adaptive depth control leaves it (its weight,
+// kr_A kr_B channel by channel, under the bailout in every channel) or leaves the ray off A.
+struct AdcCase {
+    std::string name;
+    double bailout;
+    bool tracesRayOffB;
+};
+
+std::ostream& operator<<(std::ostream& out, const AdcCase& c) {
+    return out << c.name;
+}
+
+class CliAdaptiveDepthControl : public testing::TestWithParam<AdcCase> {};
+
+TEST_P(CliAdaptiveDepthControl, LeavesTheRaysThatCarryLessThanTheBailout) {
+    const AdcCase& param = GetParam();
+    // A looks down the view direction at 45 degrees and sends the rays along +x; B sends them up
+    // and away from A, whose plane they then never meet again. The camera's narrow view keeps
+    // every ray on that course.
+    json scene = json::parse(R"({
+      "camera": { "position": [0, 0, 0], "look_at": [0, 0, -1], "vfov": 10 },
+      "render": { "width": 16, "height": 12, "spp": 1, "max_depth": 5 },
+      "background": 1, "ambient": 0,
+      "materials": {
+        "a": { "diffuse": 0, "reflection": [0.5, 0.2, 0.2] },
+        "b": { "diffuse": 0, "reflection": [0.5, 0.9, 0.2] }
+      },
+      "objects": [
+        { "type": "plane", "point": [0, 0, -5], "normal": [1, 0, 1], "material": "a" },
+        { "type": "plane", "point": [8, 0, 0], "normal": [-1, 0.70710678, 0.70710678],
+          "material": "b" }
+      ],
+      "lights": []
+    })");
+    scene["render"]["adc_bailout"] = param.bailout;
+    const Image image = renderScene(scene).image;
+    // kr_A kr_B: (0.25, 0.18, 0.04), largest 0.25; the product of the largest weights, 0.45,
+    // is not the weight: a bailout of 0.3 leaves the ray.
+    const Image::Rgb expected =
+        param.tracesRayOffB ? Image::Rgb{0.25f, 0.18f, 0.04f} : Image::Rgb{0, 0, 0};
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                EXPECT_NEAR(image.at(x, y)[c], expected[c], 1e-6)
+                    << "at (" << x << ", " << y << ")";
+}
+
+INSTANTIATE_TEST_SUITE_P(Cases, CliAdaptiveDepthControl,
+                         testing::Values(AdcCase{"OffTracesEveryRay", 0, true},
+                                         AdcCase{"BelowTheLargestChannelTraces", 0.24, true},
+                                         AdcCase{"AboveEveryChannelLeavesTheRay", 0.3, false},
+                                         AdcCase{"AboveTheFirstWeightLeavesBoth", 0.6, false}),
+                         CaseName());
+
 // --- Clear glass ---
 
 TEST(CliGlass, Ior1GlassSphereChangesNothing) {

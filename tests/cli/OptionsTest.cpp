@@ -104,7 +104,9 @@ INSTANTIATE_TEST_SUITE_P(Options, CliOverride,
                          testing::Values(OverrideCase{"Width", "--width", "width", 40},
                                          OverrideCase{"Height", "--height", "height", 30},
                                          OverrideCase{"Spp", "--spp", "spp", 4},
-                                         OverrideCase{"MaxDepth", "--max-depth", "max_depth", 0}),
+                                         OverrideCase{"MaxDepth", "--max-depth", "max_depth", 0},
+                                         OverrideCase{"AdcBailout", "--adc-bailout", "adc_bailout",
+                                                      1}),
                          CaseName());
 
 TEST(CliIntegratorOption, OverridesTheScenes) {

@@ -80,8 +80,11 @@ TEST(CliResumeRefuses, AnotherRenderOrADamagedFile) {
     interruptedRender(folder, kRender, std::chrono::milliseconds(500));
     const std::string saved = readFile(folder / "out.pfm.resume");
 
-    for (const auto& option : std::vector<std::vector<std::string>>{
-             {"--seed", "7"}, {"--max-depth", "2"}, {"--aov", "depth"}, {"--crop", "0,0,64,64"}}) {
+    for (const auto& option : std::vector<std::vector<std::string>>{{"--seed", "7"},
+                                                                    {"--max-depth", "2"},
+                                                                    {"--adc-bailout", "0.5"},
+                                                                    {"--aov", "depth"},
+                                                                    {"--crop", "0,0,64,64"}}) {
         const RunResult run = runLancer(with(kRender, with(option, {"--resume"})), folder.path());
         EXPECT_EQ(run.exitStatus, 2) << option[0] << ": " << run;
         ASSERT_EQ(run.errorLines().size(), 1u) << run;
