@@ -26,8 +26,9 @@
 // * Recursion depth. lancer max_depth 8 = the camera ray plus 8 bounces, 9 surface hits along a
 //   path; POV-Ray counts the camera ray as level 1: max_trace_level 9.
 //
-// * adc_bailout. POV-Ray's default 1/255 as the headline (its own optimisation), and
-//   `Declare=ADC=0` on the command line for lancer's ray tree (every ray down to max_depth).
+// * adc_bailout. POV-Ray's default 1/255 as the headline, with lancer's `--adc-bailout` at the
+//   same value, and `Declare=ADC=0` on the command line (lancer: `--adc-bailout 0`, its default)
+//   for every ray down to max_depth, as in whitted.pov.
 //
 // * Shading. As in whitted.pov: pigment = kd, finish { ambient 1 diffuse 1 specular ks
 //   roughness 1/shininess reflection kr }, ambient_light = the scene's "ambient" (lancer's ka

@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
 # lancer vs POV-Ray 3.7 on one scene written for both, rendered with 1 and 2 threads. Prints a
-# Markdown report: median times and the ratios POV-Ray / lancer.
+# Markdown report: median times and the ratios POV-Ray / lancer. Both renderers use POV-Ray's
+# default adaptive depth control (adc_bailout 1/255: lancer's --adc-bailout), and again without
+# it (adc_bailout 0: every ray down to the depth), each against the other with the same setting.
 #   whitted: scenes/whitted.json (lancer) and bench/whitted.pov (the same scene for POV-Ray, see
 #            its header), 640x480, 16 samples per pixel, depth 5
 #   csg:     scenes/csg-whitted.json and bench/csg.pov (POV-Ray's union, merge, intersection and
@@ -10,7 +12,7 @@
 #                                   [--max-wait S]
 #   --scene S     the scene to compare: whitted (the default) or csg
 #   --runs N      timed runs of each configuration (default 5), after one untimed warm-up run
-#   --no-adc0     skip the extra POV-Ray configuration with adc_bailout 0 (same ray tree as lancer)
+#   --no-adc0     skip the configurations with adc_bailout 0 (every ray traced), both renderers'
 #   --images DIR  also write half-size copies of both renders to DIR (e.g. docs/bench), as
 #                 SCENE-lancer.png and SCENE-povray.png (needs ImageMagick's convert)
 #   --max-wait S  before each run, wait up to S seconds (default 120) for an idle CPU
@@ -72,13 +74,16 @@ lancer_tree=$(git describe --always --dirty 2>/dev/null || echo "not a git check
 pov_args=(+I"$pov" +W"$width" +H"$height" +AM1 +A0.0 +R4 +J1.0 File_Gamma=sRGB +FN -D -P)
 
 configs=(lancer-1 lancer-2 povray-1 povray-2)
-if ((adc0)); then configs+=(povray-adc0-1 povray-adc0-2); fi
+if ((adc0)); then configs+=(lancer-adc0-1 lancer-adc0-2 povray-adc0-1 povray-adc0-2); fi
 
 run_config() { # name log: renders once, the image to $out/name.png, all output to log
     local name=$1 log=$2 threads=${1##*-}
     case $name in
-        lancer-*)
-            "$out/lancer" "$scene" -o "$out/$name.png" --threads "$threads" ;;
+        lancer-adc0-*)
+            "$out/lancer" "$scene" -o "$out/$name.png" --threads "$threads" --adc-bailout 0 ;;
+        lancer-*)  # POV-Ray's default adc_bailout, 1/255
+            "$out/lancer" "$scene" -o "$out/$name.png" --threads "$threads" \
+                --adc-bailout 0.00392156863 ;;
         povray-adc0-*)
             povray "${pov_args[@]}" +O"$out/$name.png" +WT"$threads" Declare=ADC=0 ;;
         povray-*)
@@ -166,7 +171,7 @@ echo "- lancer: $("$out/lancer" --version 2>&1 | head -1) (bin/lancer; source tr
 echo "- POV-Ray: $(povray --version 2>&1 | grep -m1 -oE 'POV-Ray [0-9][^ ]*')"
 echo "- $runs timed runs of each configuration after one warm-up, interleaved; load average before"
 echo "  $load_before, after $load_after; runs that started on a busy CPU (waited $max_wait s): $busy_starts"
-echo "- lancer: $(grep -oE '[0-9.]+ M rays' "$out/lancer-2.$runs.log" | tail -1) (camera, reflected, refracted and shadow rays)"
+echo "- lancer: $(grep -oE '[0-9.]+ M rays' "$out/lancer-2.$runs.log" | tail -1) with adc_bailout 1/255$( ((adc0)) && echo ", $(grep -oE '[0-9.]+ M rays' "$out/lancer-adc0-2.$runs.log" | tail -1) with 0") (camera, reflected, refracted and shadow rays)"
 echo "- POV-Ray (last 2-thread run):" \
     "$(grep -oE 'Samples: *[0-9]+' "$out/povray-2.$runs.log" | grep -oE '[0-9]+$' | awk -v p=$((width * height)) '{print $1 / p}')" \
     "supersamples per pixel of the image" \
@@ -186,30 +191,34 @@ def median(name, column):
     return statistics.median(values) if values else float("nan")
 
 label = {
-    "lancer": "lancer",
+    "lancer": "lancer, adc_bailout 1/255 (POV-Ray's default)",
     "povray": "POV-Ray 3.7 (default adc_bailout 1/255)",
-    "povray-adc0": "POV-Ray 3.7, adc_bailout 0 (lancer's ray tree)",
+    "lancer-adc0": "lancer, adc_bailout 0 (every ray)",
+    "povray-adc0": "POV-Ray 3.7, adc_bailout 0 (every ray)",
 }
+# Each POV-Ray configuration against lancer's with the same adc_bailout.
+against = {"povray": "lancer", "povray-adc0": "lancer-adc0"}
 print("| renderer | threads | wall clock: median (min-max) | CPU time | render phase "
       "| POV-Ray / lancer: wall clock | POV-Ray / lancer: render phase |")
 print("| --- | ---: | ---: | ---: | ---: | ---: | ---: |")
-for kind in ("lancer", "povray", "povray-adc0"):
+for kind in ("lancer", "povray", "lancer-adc0", "povray-adc0"):
     for threads in (1, 2):
         name = f"{kind}-{threads}"
         if name not in rows:
             continue
         walls = [r[0] for r in rows[name]]
         wall, cpu, inner = median(name, 0), median(name, 1), median(name, 2)
-        if kind == "lancer":
+        if kind not in against:
             ratio_wall = ratio_inner = "1"
         else:
-            ratio_wall = f"{wall / median(f'lancer-{threads}', 0):.2f}"
-            ratio_inner = f"{inner / median(f'lancer-{threads}', 2):.2f}"
+            ratio_wall = f"{wall / median(f'{against[kind]}-{threads}', 0):.2f}"
+            ratio_inner = f"{inner / median(f'{against[kind]}-{threads}', 2):.2f}"
         print(f"| {label[kind]} | {threads} | {wall:.2f} s ({min(walls):.2f}-{max(walls):.2f}) "
               f"| {cpu:.2f} s | {inner:.2f} s | {ratio_wall} | {ratio_inner} |")
 print()
 print("Medians. Wall clock: the whole process as a user waits for it (start-up, parse, render,")
 print("PNG). CPU time: user + system. Render phase: lancer's own reported render time, POV-Ray's")
 print("reported \"Trace Time\" (POV-Ray also spends about 0.6 s idle in start-up and shut-down,")
-print("outside its trace time). A ratio above 1 means lancer is faster.")
+print("outside its trace time). Ratios: each POV-Ray row against the lancer row of the same")
+print("adc_bailout and threads; above 1 means lancer is faster.")
 PYTHON
