@@ -201,6 +201,9 @@ private:
     void indexClusterLinks();
     // clusterTransfers_ and fromClusters_ from the present radiosities.
     void updateFromClusters();
+    // How many terms the round resolved at the leaves would keep: the links of every leaf and
+    // its ancestors.
+    std::size_t leafTermCount() const;
     // The refinement's first candidates: the top cluster's link to itself, or every pair of
     // patches.
     std::vector<Candidate> firstCandidates() const;
