@@ -262,7 +262,9 @@ private:
     // The root elements' radiosities in the clusters' member order, and radiosity 1 in its place.
     ClusterHierarchy::MemberRadiosities memberRadiosities_, unitRadiosities_;
     std::vector<double> clusterPower_;  // per cluster, sourcePower(), refreshed with them
-    ColorArrays clusterTransfers_;      // what each brings to its receiver's centre, in that order
+    // What each brings to its receiver's centre, in that order (from radiosity 1 between
+    // resolveAtLeaves and the next iteration).
+    ColorArrays clusterTransfers_;
     std::vector<std::array<Color, 2>> fromClusters_;  // per leaf: what they all bring it
     std::vector<std::array<Color, 2>> gathered_;      // through the element's own links
     // What each leaf gathers: every link of the leaf and of its ancestors, with the form factor
