@@ -66,12 +66,14 @@ constexpr std::size_t kDecisionSlice = std::size_t{1} << 20;
 constexpr float kClusterSeparation = 3;
 constexpr float kNearSpread = 64;
 
-// Jacobi iterations and refinement passes stop at these, whatever the tolerances.
-constexpr int kMaxRefinementPasses = 12;
-
-// A refinement pass with fewer candidates than the links over this is the last: each pass costs
-// a round of iterations over all the links (1.6 s of the bunny's 32 s) to find the next pass's
-// candidates, and the tail of a solve is passes of a few hundred, then a few, candidates.
+// The refinement passes: the first refines for the light put in, the second for the light of the
+// first solution, the third for what the second's links changed; each takes a round of
+// iterations over all the links to find the next pass's candidates (1.6 s of the bunny's 30 s).
+// A fourth finds a few hundred links to refine in millions; stopping at three took 2 s off the
+// bunny (its error against a path-traced reference did not grow) and moved the Cornell box's
+// RMSE from 0.00270 to 0.00272 (docs/BENCHMARKS.md). A pass with fewer candidates than the
+// links over kFewCandidates is the last as well.
+constexpr int kMaxRefinementPasses = 3;
 constexpr std::size_t kFewCandidates = 1000;
 
 float longestEdge(const std::array<Vec3, 3>& t) {

@@ -37,9 +37,9 @@ class VertexSmoothing;
 //     the power still to come (extrapolated from the last two iterations) is below `threshold`
 //     times the power put in;
 //  5. steps 2-4 again with the new radiosities (links refined where they now carry more), until
-//     nothing more is refined, or a pass finds fewer than a thousandth of the links to refine:
-//     those are refined and not examined again (iterated over in step 6, or here where step 6
-//     is skipped);
+//     nothing more is refined, for at most three passes; the last (the third, or one that finds
+//     fewer than a thousandth of the links to refine) refines and is not examined again (its
+//     links are iterated over in step 6, or here where step 6 is skipped);
 //  6. a last round of iterations where each leaf gathers through the links of itself and its
 //     ancestors with form factors from the leaf itself (in a closed room they add up to 1);
 //  7. the irradiance at every vertex of the leaves is gathered there through the same links,
