@@ -125,10 +125,27 @@ Transform::Matrix localMatrix(const tinygltf::Node& node) {
 }
 
 // tinygltf's image decoder (stb) behind the image reader's check of the declared size, so that a
-// small file whose header claims a huge image is refused before its pixels are allocated.
+// small file whose header claims a huge image is refused before its pixels are allocated. `model`
+// is the model being read: tinygltf hands an image stored in a buffer view over as the view's
+// place in its buffer without checking that the view ends within the buffer, so that is checked
+// here before anything reads the bytes (a view past the buffer's end was read beyond it).
 bool decodeSizeCheckedImage(tinygltf::Image* image, int index, std::string* error,
                             std::string* warning, int width, int height, const unsigned char* bytes,
-                            int size, void*) {
+                            int size, void* model) {
+    if (image->bufferView >= 0) {
+        // tinygltf has checked both indices before calling here.
+        const auto& gltf = *static_cast<const tinygltf::Model*>(model);
+        const tinygltf::BufferView& view =
+            gltf.bufferViews[static_cast<std::size_t>(image->bufferView)];
+        const std::size_t length = gltf.buffers[static_cast<std::size_t>(view.buffer)].data.size();
+        if (view.byteOffset > length || view.byteLength > length - view.byteOffset) {
+            *error += "image " + std::to_string(index) + ": its buffer view (" +
+                      std::to_string(view.byteLength) + " bytes from byte " +
+                      std::to_string(view.byteOffset) + ") ends beyond its buffer (" +
+                      std::to_string(length) + " bytes)";
+            return false;
+        }
+    }
     try {
         ImageReader::checkDeclaredSize(bytes, static_cast<std::size_t>(std::max(size, 0)), "");
     } catch (const InputError& refused) {
@@ -544,8 +561,8 @@ std::shared_ptr<TriangleMesh> GltfLoader::load(const fs::path& path,
     if (!fs::exists(path))
         throw InputError(path.string(), "cannot open the glTF file (does it exist?)");
     tinygltf::TinyGLTF parser;
-    parser.SetImageLoader(decodeSizeCheckedImage, nullptr);
     tinygltf::Model model;
+    parser.SetImageLoader(decodeSizeCheckedImage, &model);
     std::string error, warning;
     const bool read = isBinaryGltf(path)
                           ? parser.LoadBinaryFromFile(&model, &error, &warning, path.string())

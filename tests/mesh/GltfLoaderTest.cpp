@@ -365,6 +365,19 @@ TEST_F(GltfTest, AccessorBeyondItsBufferIsAnError) {
     EXPECT_NE(failure(doc.text()).find("beyond its buffer"), std::string::npos);
 }
 
+TEST_F(GltfTest, ImageViewBeyondItsBufferIsAnErrorNotARead) {
+    // tinygltf passes the view's place in the buffer on unchecked: read past the buffer's end
+    // under AddressSanitizer before the loader checked it (found by fuzz_gltf).
+    GltfDocument doc;
+    doc.addRoot(doc.node({{"mesh", doc.unitTriangle()}}));
+    doc.json_()["bufferViews"].push_back({{"buffer", 0}, {"byteOffset", 24}, {"byteLength", 48}});
+    doc.json_()["images"] = {{{"bufferView", 1}, {"mimeType", "image/png"}}};
+    EXPECT_NE(failure(doc.text())
+                  .find("image 0: its buffer view (48 bytes from byte 24) ends "
+                        "beyond its buffer (36 bytes)"),
+              std::string::npos);
+}
+
 TEST_F(GltfTest, MissingImageIsAnErrorNamingIt) {
     GltfDocument doc;
     doc.json_()["images"] = {{{"uri", "gone.png"}}};
