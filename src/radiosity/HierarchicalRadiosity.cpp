@@ -712,14 +712,9 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
         const std::array<Vec3, 3> points = quadraturePoints(mesh_.corners(element));
         for (std::size_t side = 0; side < 2; ++side)
             coverage_[leaf][side] += clusterCoverage[leaf][side].average();
-        if (resolved) {
-            // At most a term per link: reserved at once, not grown by doubling (a third of the
-            // terms' memory was spare capacity).
-            std::size_t links = 0;
-            for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e])
-                links += links_[e].size();
-            leafTerms_[leaf].reserve(links);
-        }
+        // At most a term per link: reserved at once, not grown by doubling (a third of the terms'
+        // memory was spare capacity).
+        if (resolved) leafTerms_[leaf].reserve(linksGatheredBy(leaf));
         for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e]) {
             for (const Link& link : links_[e]) {
                 if (!resolved) {
@@ -961,11 +956,17 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
     return std::move(smoothing).solution(mesh_.lookupDistance(patchSize_), fingerprint_, s);
 }
 
+std::size_t HierarchicalRadiosity::linksGatheredBy(std::uint32_t leaf) const {
+    std::size_t links = 0;
+    for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e])
+        links += links_[e].size();
+    return links;
+}
+
 std::size_t HierarchicalRadiosity::leafTermCount() const {
     std::size_t terms = 0;
     for (std::uint32_t leaf : mesh_.leaves())
-        for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e])
-            terms += links_[e].size();
+        terms += linksGatheredBy(leaf);
     return terms;
 }
 

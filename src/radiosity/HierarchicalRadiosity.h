@@ -203,8 +203,10 @@ private:
     void indexClusterLinks();
     // clusterTransfers_ and fromClusters_ from the present radiosities.
     void updateFromClusters();
-    // How many terms the round resolved at the leaves would keep: the links of every leaf and
-    // its ancestors.
+    // The element links a leaf gathers through: its own and its ancestors' (at most a leaf term
+    // each).
+    std::size_t linksGatheredBy(std::uint32_t leaf) const;
+    // How many terms the round resolved at the leaves would keep: linksGatheredBy, summed.
     std::size_t leafTermCount() const;
     // The refinement's first candidates: the top cluster's link to itself, or every pair of
     // patches.
