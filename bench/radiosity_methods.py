@@ -1,9 +1,13 @@
 #!/usr/bin/env python3
 """Radiosity methods on the Cornell box: lancer's progressive and hierarchical radiosity at a few
 settings, each the whole process timed (solve and a 16-spp render, 256 x 256) on the given
-threads, against Mitsuba 3's 16384-spp path-traced reference, with the measure of issue 12: the
+threads, against Mitsuba 3's 16384-spp path-traced references, with the measure of issue 12: the
 RMSE over the image without the lamp's box (rows 30-42, columns 103-152), and the relative RMSE
-(that RMSE over the reference's mean there). Prints a Markdown table for docs/BENCHMARKS.md.
+(that RMSE over the reference's mean there). Two references: the stored one, whose paths are cut
+at 7 bounces (Mitsuba's max_depth 8), and the one without a cut
+(`mitsuba-path-unbounded-16384spp.exr`, made by bench/mitsuba_cornell_unbounded.py), which holds
+every bounce of light, as radiosity does: the cut takes up to 20% of the light from the dark
+corners. Prints a Markdown table for docs/BENCHMARKS.md.
 
     build/mitsuba-venv/bin/python bench/radiosity_methods.py [--threads 2] [--lancer bin/lancer]
 
@@ -58,11 +62,13 @@ def main() -> None:
     parser.add_argument("--lancer", type=Path, default=ROOT / "bin" / "lancer")
     args = parser.parse_args()
     reference = read_exr(CORNELL / "mitsuba-path-16384spp.exr")
+    unbounded = read_exr(CORNELL / "mitsuba-path-unbounded-16384spp.exr")
     text = CORNELL.joinpath("cornell.json").read_text()
     scene = json.loads("\n".join(l for l in text.splitlines() if not l.lstrip().startswith("//")))
     scene["render"].update({"integrator": "radiosity", "spp": 16})
-    print("| method and settings | whole process | RMSE off the lamp | relative | solution |")
-    print("| --- | --- | --- | --- | --- |")
+    print("| method and settings | whole process | RMSE off the lamp, every bounce | relative | "
+          "against 7 bounces | relative | solution |")
+    print("| --- | --- | --- | --- | --- | --- | --- |")
     with tempfile.TemporaryDirectory(prefix="lancer-radiosity-bench.") as workdir:
         for label, block in SETTINGS:
             scene["radiosity"] = block
@@ -74,9 +80,12 @@ def main() -> None:
                 [str(args.lancer), str(path), "-o", str(output), "--threads", str(args.threads)],
                 capture_output=True, text=True, check=True)
             seconds = time.perf_counter() - start
-            rmse, relative = errors(read_exr(output), reference)
+            image = read_exr(output)
+            rmse, relative = errors(image, unbounded)
+            rmse7, relative7 = errors(image, reference)
             note = "".join(re.findall(r"radiosity: (.*)", run.stderr)[-1:])
-            print(f"| {label} | {seconds:.2f} s | {rmse:.5f} | {relative:.4f} | {note} |", flush=True)
+            print(f"| {label} | {seconds:.2f} s | {rmse:.5f} | {relative:.4f} | {rmse7:.5f} | "
+                  f"{relative7:.4f} | {note} |", flush=True)
 
 
 if __name__ == "__main__":
