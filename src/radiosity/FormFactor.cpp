@@ -139,14 +139,17 @@ Color FormFactor::visibility(const Element& receiver, const std::array<Vec3, 3>*
         from.pError = gamma(16) * abs(from.p);
         Vec3 target = uniformPointOn(triangle, stratifiedPoint(k, rays, seed));
         if (!(dot(n, target - start) > 0)) continue;  // behind the receiver
-        if (shooter.curved) {
-            // Onto the true surface, and a little off it towards the receiver: rounding must
-            // not let a nearby receiver's ray meet the surface just before the target.
-            const Vec3 towardsReceiver =
-                shooterSide == Side::Front ? shooter.normal : -shooter.normal;
+        // Off the source's surface towards the receiver: rounding must not let the ray meet that
+        // surface just before the target. A target rounded behind a flat source's plane by an ulp
+        // was met there at t = 0.9996 by rays grazing it from the next wall across a corner: a
+        // quarter of the links between the elements along a room's edges lost a ray.
+        const Vec3 towardsReceiver = shooterSide == Side::Front ? shooter.normal : -shooter.normal;
+        if (shooter.curved)
             target = SurfaceProbe::onSurface(shooter, target) +
                      (1e-4f * std::sqrt(shooter.area)) * towardsReceiver;
-        }
+        else
+            target =
+                offsetRayOrigin(target, gamma(16) * abs(target), towardsReceiver, towardsReceiver);
         LightSample towards;
         towards.position = target;
         towards.wi = normalize(target - from.p);

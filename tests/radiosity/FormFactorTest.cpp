@@ -9,6 +9,7 @@
 #include "RadiosityTestSupport.h"
 #include "radiosity/FormFactor.h"
 #include "radiosity/PatchMesher.h"
+#include "sampling/Sampling.h"
 
 namespace lancer::test {
 namespace {
@@ -121,6 +122,41 @@ TEST(FormFactorTest, PerpendicularUnitSquaresSharingAnEdge) {
     ASSERT_EQ(p.b.size(), 2u);
     EXPECT_NEAR(areaFormFactor(p.scene, p.mesh, p.a, p.b, 1), 0.20004, 1e-3);
     EXPECT_NEAR(areaFormFactor(p.scene, p.mesh, p.b, p.a, 1), 0.20004, 1e-3);
+}
+
+TEST(FormFactorTest, NothingHidesTwoWallsOfACornerFromEachOther) {
+    // The walls x = 1 and z = 1 of a room, meeting along its edge. The rays between elements near
+    // that edge graze both walls; a ray's end point rounded an ulp behind its wall met the wall
+    // just before it (at t = 0.9996), and the pair lost a ray of its visibility.
+    const SquarePair p = squares(square(Vec3(1, 0, 1), Vec3(0, 1, 0), Vec3(0, 0, -1)) + ", " +
+                                     square(Vec3(1, 0, 1), Vec3(-1, 0, 0), Vec3(0, 1, 0)),
+                                 Vec3(-1, 0, 0), Vec3(0, 0, -1), 1.0f / 16);
+    const FormFactor formFactor(p.scene);
+    const auto nearTheEdge = [&](const std::vector<std::uint32_t>& patches) {
+        std::vector<std::uint32_t> elements;
+        for (std::uint32_t patch : patches)
+            for (std::uint32_t e = p.mesh.patches[patch].firstElement;
+                 e < p.mesh.patches[patch].firstElement + p.mesh.patches[patch].elementCount; ++e)
+                if (std::max(1 - p.mesh.elements[e].centroid.x, 1 - p.mesh.elements[e].centroid.z) <
+                    0.1f)
+                    elements.push_back(e);
+        return elements;
+    };
+    const std::vector<std::uint32_t> receivers = nearTheEdge(p.a), sources = nearTheEdge(p.b);
+    ASSERT_GT(receivers.size(), 30u);
+    ASSERT_GT(sources.size(), 30u);
+    std::uint64_t rays = 0;
+    int hidden = 0;
+    for (std::uint32_t r : receivers)
+        for (std::uint32_t s : sources) {
+            const Element& source = p.mesh.elements[s];
+            const Color visibility = formFactor.areaVisibility(
+                p.mesh.elements[r], p.mesh.corners(p.mesh.elements[r]), false, Side::Front,
+                p.mesh.corners(source), p.mesh.patches[source.patch], Side::Front, 16,
+                hashValues(r, s), rays);
+            if (visibility.r < 1) ++hidden;
+        }
+    EXPECT_EQ(hidden, 0) << "of " << receivers.size() * sources.size() << " pairs";
 }
 
 TEST(FormFactorTest, ReciprocityForUnequalPatches) {
