@@ -26,7 +26,7 @@ class VertexSmoothing;
 //     may be wrong by more than `refinement_tolerance` times the mean radiosity put in (the power
 //     put in over the area; the error: reflectance x source radiosity x the spread of the form
 //     factor over the receiver, plus the whole form factor when the link is partly occluded) is
-//     replaced by links from the larger of its two ends' children; the form factor of a link is the
+//     replaced by links from the longer of its two ends' children; the form factor of a link is the
 //     exact point-to-polygon formula averaged over three points of the receiver, its visibility the
 //     fraction of `visibility_rays` rays from points of the receiver to points of the source that
 //     get through;
@@ -152,7 +152,8 @@ private:
     // Whether the hierarchy, with `candidates` more links, reaches its memory bounds (then nothing
     // more is split).
     void checkSize(std::size_t candidates);
-    // Which end of the pair to split (the larger of the splittable ones), or kNone.
+    // Which end of the pair to split (the one with the longer longest edge, of the splittable
+    // ones), or kNone.
     std::uint32_t splitChoice(std::uint32_t receiver, std::uint32_t source) const;
     // Places the elements from `first` on (surface point, reflectance) and computes the light
     // they receive from the scene's lights.

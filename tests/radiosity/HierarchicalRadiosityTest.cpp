@@ -311,6 +311,37 @@ TEST(HierarchicalRadiosityTest, AWallStandingOnTheFloorShadowsItsFoot) {
     }
 }
 
+TEST(HierarchicalRadiosityTest, ALongThinFloorIsSplitAcrossAShadow) {
+    // A floor 4 long and 0 to 0.01 wide (one patch, one element: less area than the lamp's, but
+    // longer), under a lamp and a black plank that shadows it from x = 1.05 to 1.75 (0.55 to
+    // 2.25 with the penumbrae). Nothing else reflects: the shadow is black. The refinement splits
+    // the longer end of a pair first; it split the larger, the lamp, down to its least size, and
+    // the floor was left whole, its light interpolated from its lit ends across the shadow.
+    Scene scene = loadScene(
+        R"({"type": "triangle", "material": "white",
+            "vertices": [[-2, 0, 0], [2, 0, 0.01], [2, 0, 0]]}, )" +
+            square(Vec3(-0.25f, 0.5f, -0.25f), Vec3(0.5f, 0, 0), Vec3(0, 0, 0.5f), "lamp") + ", " +
+            square(Vec3(0.4f, 0.25f, -1), Vec3(0.6f, 0, 0), Vec3(0, 0, 2), "black"),
+        R"(, "radiosity": {"patch_size": 8, "element_size": 8, "subdivision_levels": 6, )" +
+            kHierarchical + "}");
+    HierarchicalRadiosity solver(scene);
+    const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
+    ASSERT_TRUE(solution);
+    const Vec3 up(0, 1, 0);
+    // Half-way across the floor, whose width grows from 0 at x = -2 to 0.01 at x = 2.
+    const auto at = [&](float x) {
+        return solution->irradiance(Vec3(x, 0, 0.00125f * (x + 2)), up, up);
+    };
+    const auto lit = at(0);
+    ASSERT_TRUE(lit);
+    EXPECT_GT(lit->r, 0.1f);
+    for (float x : {1.2f, 1.4f, 1.6f}) {
+        const auto shadowed = at(x);
+        ASSERT_TRUE(shadowed) << x;
+        EXPECT_LT(shadowed->r, 0.05f * lit->r) << "x " << x;
+    }
+}
+
 // The box with each wall in 4 x 4 squares, lit by a point light over a black square, clustered.
 Scene clusteredRoom() {
     return loadScene(
