@@ -165,20 +165,19 @@ std::uint32_t HierarchicalRadiosity::split(std::uint32_t element) {
 }
 
 bool HierarchicalRadiosity::splittable(std::uint32_t element) const {
-    return !full_ && longestEdge(mesh_.corners(mesh_.elements[element])) > smallestEdge_;
+    return splittableAt(longestEdge(mesh_.corners(mesh_.elements[element])));
 }
 
 std::uint32_t HierarchicalRadiosity::splitChoice(std::uint32_t receiver,
                                                  std::uint32_t source) const {
-    if (full_) return Element::kNone;
     // The longer of the two, not the larger: a sliver along a contact line (small, but long
     // enough to cross a shadow) came last, the lamp split before it into pieces whose links each
     // carried too little to split it, and it stayed whole, its light interpolated from its lit
     // end across the shadow.
     const float r = longestEdge(mesh_.corners(mesh_.elements[receiver]));
     const float s = longestEdge(mesh_.corners(mesh_.elements[source]));
-    if (r > smallestEdge_ && s > smallestEdge_) return r >= s ? receiver : source;
-    return r > smallestEdge_ ? receiver : s > smallestEdge_ ? source : Element::kNone;
+    if (splittableAt(r) && splittableAt(s)) return r >= s ? receiver : source;
+    return splittableAt(r) ? receiver : splittableAt(s) ? source : Element::kNone;
 }
 
 void HierarchicalRadiosity::prepareElements(std::size_t first) {

@@ -149,6 +149,8 @@ private:
     // Splits an element (unless it is already split) and returns its first child.
     std::uint32_t split(std::uint32_t element);
     bool splittable(std::uint32_t element) const;
+    // The same for an element whose longest edge is given.
+    bool splittableAt(float longestEdge) const { return !full_ && longestEdge > smallestEdge_; }
     // Whether the hierarchy, with `candidates` more links, reaches its memory bounds (then nothing
     // more is split).
     void checkSize(std::size_t candidates);
