@@ -26,6 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from cornell_time_to_error import mitsuba_cornell_box  # bench/, beside this script
+from radiosity_methods import read_exr
 
 ROOT = Path(__file__).resolve().parent.parent
 STORED = ROOT / "tests" / "cli" / "data" / "cornell" / "mitsuba-path-16384spp.exr"
@@ -36,10 +37,8 @@ def render(mi, max_depth: int, spp: int, pass_spp: int, first_seed: int) -> np.n
     description["integrator"]["max_depth"] = max_depth
     scene = mi.load_dict(description)
     passes = max(1, spp // pass_spp)
-    total = np.zeros((256, 256, 3))
-    for k in range(passes):
-        total += np.array(mi.render(scene, spp=pass_spp, seed=first_seed + k), dtype=np.float64)
-    return total / passes
+    return sum(np.array(mi.render(scene, spp=pass_spp, seed=first_seed + k), dtype=np.float64)
+               for k in range(passes)) / passes
 
 
 def rmse(a: np.ndarray, b: np.ndarray) -> float:
@@ -57,7 +56,7 @@ def main() -> None:
     import mitsuba as mi
 
     mi.set_variant(args.variant)
-    stored = np.array(mi.Bitmap(str(STORED)), dtype=np.float64)[..., :3]
+    stored = read_exr(STORED)
     # Seeds far from the long render's, so that the check's samples are its own.
     check = render(mi, 8, args.check_spp, args.pass_spp, 100000)
     again = render(mi, 8, args.check_spp, args.pass_spp, 200000)
