@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <map>
 #include <optional>
 #include <utility>
 
@@ -75,15 +77,60 @@ RadiosityMesh PatchMesher::mesh() const {
     for (const Shape* shape : shapes)
         tessellations.push_back(shape->tessellate({patchSize_, clipBox_}));
     const ContactCutter cutter(allFacets(shapes, tessellations, clipBox_), contactTolerance_);
+    const std::vector<std::vector<bool>> repeated = repeatedFacets(shapes, tessellations);
     RadiosityMesh mesh;
     for (std::size_t i = 0; i < shapes.size(); ++i)
-        addShape(mesh, *shapes[i], tessellations[i], cutter);
+        addShape(mesh, *shapes[i], tessellations[i], repeated[i], cutter);
     return mesh;
 }
 
+std::vector<std::vector<bool>> PatchMesher::repeatedFacets(
+    const std::vector<const Shape*>& shapes, const std::vector<Tessellation>& tessellations) const {
+    // A facet's place: its corners rounded to the contact tolerance, in a fixed order.
+    using Corner = std::array<std::int64_t, 3>;
+    using Place = std::array<Corner, 3>;
+    struct First {
+        Vec3 normal;
+        std::array<bool, 2> emits;  // along its normal, against it
+    };
+    std::map<Place, First> firsts;
+    std::vector<std::vector<bool>> repeated(shapes.size());
+    for (std::size_t i = 0; i < shapes.size(); ++i) {
+        const Shape& shape = *shapes[i];
+        repeated[i].assign(tessellations[i].facets.size(), false);
+        for (std::size_t f = 0; f < tessellations[i].facets.size(); ++f) {
+            const Tessellation::Facet& facet = tessellations[i].facets[f];
+            const Material* material = shape.primitiveMaterial(facet.primitive);
+            if (!material || !isMeshed(*material)) continue;
+            Place place;
+            for (std::size_t k = 0; k < 3; ++k)
+                for (int axis = 0; axis < 3; ++axis)
+                    place[k][static_cast<std::size_t>(axis)] =
+                        std::llround(facet.corners[k][axis] / contactTolerance_);
+            std::sort(place.begin(), place.end());
+            const std::array<Vec3, 3>& c = facet.corners;
+            const Vec3 normal = cross(c[1] - c[0], c[2] - c[0]);
+            const bool emits = !material->emission().isBlack();
+            const First facetSides{normal, {emits, emits && shape.emitsOnBothSides()}};
+            const auto [at, inserted] = firsts.try_emplace(place, facetSides);
+            if (inserted) continue;
+            // Its emitting sides, seen from the first's normal.
+            const bool reversed = dot(normal, at->second.normal) < 0;
+            const bool emitsAlong = facetSides.emits[reversed ? 1 : 0];
+            const bool emitsAgainst = facetSides.emits[reversed ? 0 : 1];
+            repeated[i][f] =
+                (!emitsAlong || at->second.emits[0]) && (!emitsAgainst || at->second.emits[1]);
+        }
+    }
+    return repeated;
+}
+
 void PatchMesher::addShape(RadiosityMesh& mesh, const Shape& shape,
-                           const Tessellation& tessellation, const ContactCutter& cutter) const {
-    for (const Tessellation::Facet& facet : tessellation.facets) {
+                           const Tessellation& tessellation, const std::vector<bool>& repeated,
+                           const ContactCutter& cutter) const {
+    for (std::size_t f = 0; f < tessellation.facets.size(); ++f) {
+        if (repeated[f]) continue;
+        const Tessellation::Facet& facet = tessellation.facets[f];
         const Material* material = shape.primitiveMaterial(facet.primitive);
         if (!material || !isMeshed(*material)) continue;
         const Source source{&shape, material, shape.emitsOnBothSides(), tessellation.curved,

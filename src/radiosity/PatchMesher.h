@@ -23,7 +23,11 @@ struct Tessellation;
 // surfaces) are not meshed: they only block or transmit the form factors' rays. Flat surfaces are
 // first cut along the contact lines of the objects standing on them (ContactCutter), and the
 // pieces inside those objects are left out, so that no element straddles a contact line or lies
-// where no light reaches.
+// where no light reaches. A facet repeated at the same place (the same three corners, either way
+// round) is meshed once: every receiver would see it twice. McGuire's Cornell boxes give a face of
+// each block twice (their bottom faces name the wrong vertices), and a wall may be modelled as two
+// faces back to back. A repeat is meshed all the same where it emits on a side the first does not
+// (a two-sided lamp made of two faces).
 class PatchMesher {
 public:
     PatchMesher(const Scene& scene, const RadiositySettings& settings);
@@ -43,8 +47,12 @@ private:
         float probeDistance;
     };
 
+    // Per shape and facet, whether it repeats an earlier meshed facet and is not meshed.
+    std::vector<std::vector<bool>> repeatedFacets(
+        const std::vector<const Shape*>& shapes,
+        const std::vector<Tessellation>& tessellations) const;
     void addShape(RadiosityMesh& mesh, const Shape& shape, const Tessellation& tessellation,
-                  const ContactCutter& cutter) const;
+                  const std::vector<bool>& repeated, const ContactCutter& cutter) const;
     // The parts of a convex polygon in the cells of a square grid in its plane, each cell a pair of
     // patches.
     std::vector<std::vector<Vec3d>> gridCells(const std::vector<Vec3d>& polygon,

@@ -13,6 +13,7 @@
 
 #include "RadiosityTestSupport.h"
 #include "radiosity/HierarchicalRadiosity.h"
+#include "radiosity/PatchMesher.h"
 #include "radiosity/RadiositySolver.h"
 
 namespace lancer::test {
@@ -25,16 +26,23 @@ constexpr float kEmission = 0.25f;
 const std::string kHierarchical = R"("method": "hierarchical", "threshold": 1e-4)";
 const std::string kClustered = kHierarchical + R"(, "clusters": true)";
 
-Scene furnaceBox(bool clusters = false) {
-    return loadScene(closedBox("glow"), R"(, "radiosity": {"patch_size": 0.5, )" +
-                                            (clusters ? kClustered : kHierarchical) + "}");
+Scene furnaceBox(bool clusters = false, const std::string& moreObjects = "") {
+    return loadScene(
+        closedBox("glow") + moreObjects,
+        R"(, "radiosity": {"patch_size": 0.5, )" + (clusters ? kClustered : kHierarchical) + "}");
 }
 
-void expectClosedBoxFurnace(bool clusters) {
+// The floor given again, the same way round, and the ceiling given again back to back with
+// itself (facing out, reflecting only).
+const std::string kRepeatedWalls =
+    ", " + square(Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0), "glow") + ", " +
+    square(Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 0, 0), "white");
+
+void expectClosedBoxFurnace(bool clusters, const std::string& moreObjects = "") {
     // Every point sees the rest of the closed box, whose radiosity is B = pi Le + rho E
     // everywhere: E = pi Le / (1 - rho) on the inner side, which the solution shows (gathered at
     // its vertices through the links) all over every wall, corners included.
-    Scene scene = furnaceBox(clusters);
+    Scene scene = furnaceBox(clusters, moreObjects);
     HierarchicalRadiosity solver(scene);
     const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
     ASSERT_TRUE(solution);
@@ -71,6 +79,30 @@ TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
 
 TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceWithClusters) {
     expectClosedBoxFurnace(true);
+}
+
+// A wall given twice would be seen twice by every receiver (its light counted twice at the
+// vertices: 20% too much on the walls facing it).
+TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceWithWallsGivenTwice) {
+    expectClosedBoxFurnace(false, kRepeatedWalls);
+}
+
+TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceWithWallsGivenTwiceAndClusters) {
+    expectClosedBoxFurnace(true, kRepeatedWalls);
+}
+
+TEST(HierarchicalRadiosityTest, AFaceGivenTwiceIsMeshedOnceUnlessItEmitsMore) {
+    const auto patchCount = [](const std::string& moreObjects) {
+        const Scene scene = furnaceBox(false, moreObjects);
+        return PatchMesher(scene, scene.settings().radiosity).mesh().patches.size();
+    };
+    const std::size_t box = patchCount("");
+    const std::size_t wall = box / 6;
+    EXPECT_EQ(patchCount(kRepeatedWalls), box);
+    // The ceiling again facing out and emitting there, where the box's does not: a two-sided
+    // lamp made of two faces keeps both.
+    EXPECT_EQ(patchCount(", " + square(Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 0, 0), "glow")),
+              box + wall);
 }
 
 void expectFormFactorsAddUpToOne(bool clusters) {
