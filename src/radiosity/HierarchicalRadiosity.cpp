@@ -1,4 +1,5 @@
 #include "radiosity/HierarchicalRadiosity.h"
+#include "geometry/Shape.h"
 
 #include <algorithm>
 #include <bit>
@@ -9,6 +10,7 @@
 #include "radiosity/LightIrradiance.h"
 #include "radiosity/PatchMesher.h"
 #include "radiosity/RadiosityReporter.h"
+#include "radiosity/SplitIrradiance.h"
 #include "radiosity/SurfaceProbe.h"
 #include "radiosity/VertexSmoothing.h"
 #include "sampling/Sampling.h"
@@ -828,21 +830,27 @@ bool HierarchicalRadiosity::iterate(bool resolved, const std::function<bool()>& 
     return true;
 }
 
-Color HierarchicalRadiosity::gatherFrom(const Element& at, const Link& link, std::uint32_t source,
-                                        std::uint64_t key, std::uint64_t& rayCount) const {
+HierarchicalRadiosity::Brought HierarchicalRadiosity::gatherFrom(const Element& at,
+                                                                 const Link& link,
+                                                                 std::uint32_t source,
+                                                                 std::uint64_t key,
+                                                                 std::uint64_t& rayCount) const {
     const Element& element = mesh_.elements[source];
     const std::array<Vec3, 3> corners = mesh_.corners(element);
     const Vec3 n = link.receiverSide == Side::Front ? at.normal : -at.normal;
     const double unoccluded = FormFactor::pointToSideOfTriangleApprox(
         Vec3d(at.centroid), Vec3d(n), corners, element.normal, link.sourceSide, element.area,
         square(longestEdge(corners)));
-    if (!(unoccluded > 0)) return Color(0);
+    if (!(unoccluded > 0)) return {};
     // A source seen large is gathered from its children: its radiosity varies over it (darker
     // towards the corners), which its average would not show.
     if (!element.isLeaf() && unoccluded > kNearField) {
-        Color sum;
-        for (std::uint32_t c = element.firstChild; c < element.firstChild + 4; ++c)
-            sum += gatherFrom(at, link, c, key, rayCount);
+        Brought sum;
+        for (std::uint32_t c = element.firstChild; c < element.firstChild + 4; ++c) {
+            const Brought child = gatherFrom(at, link, c, key, rayCount);
+            sum.total += child.total;
+            sum.direct += child.direct;
+        }
         return sum;
     }
     const Color& B = radiosity_[source][sideIndex(link.sourceSide)];
@@ -852,33 +860,63 @@ Color HierarchicalRadiosity::gatherFrom(const Element& at, const Link& link, std
     // floor, which came out too bright). One ray for the weak sources: a third more solve time on
     // the Cornell box, and the vertices' errors average out over their many links.
     const bool strong = B.average() * element.area >= kStrongLink * initialPower_;
-    return B * formFactor_.elementToTriangle(
-                   at, link.receiverSide, corners, mesh_.patches[element.patch], link.sourceSide,
-                   strong ? settings_.visibilityRays : 1, hashValues(key, source), rayCount);
+    const Color formFactor = formFactor_.elementToTriangle(
+        at, link.receiverSide, corners, mesh_.patches[element.patch], link.sourceSide,
+        strong ? settings_.visibilityRays : 1, hashValues(key, source), rayCount);
+    return {B * formFactor, emittedDirectly(source, link.sourceSide) * formFactor};
+}
+
+Color HierarchicalRadiosity::emittedDirectly(std::uint32_t element, Side side) const {
+    const Patch& patch = mesh_.patches[mesh_.elements[element].patch];
+    return patch.surface->isBounded() ? emitted_[element][sideIndex(side)] : Color(0);
 }
 
 void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
+    // What the cluster links bring of the sampled emitters' light alone.
+    ColorArrays directTransfers;
+    if (!clusters_.empty()) {
+        ClusterHierarchy::MemberRadiosities emitted;
+        clusters_.fillMemberRadiosities(
+            emitted, [&](std::uint32_t e, Side side) { return emittedDirectly(e, side); });
+        directTransfers.resize(clusterLinks_.size());
+        parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
+            const ClusterLink& link = clusterLinks_[i];
+            const Vec3 centre = clusters_.center(mesh_, link.receiver);
+            const Color delivered =
+                ClusterHierarchy::isCluster(link.source)
+                    ? clusters_.irradianceAt(link.source, centre, emitted)
+                    : ClusterHierarchy::irradianceAt(mesh_.elements[link.source], centre,
+                                                     {emittedDirectly(link.source, Side::Front),
+                                                      emittedDirectly(link.source, Side::Back)});
+            directTransfers.set(linkPosition_[i], link.visibility * delivered);
+        });
+    }
     const std::size_t count = smoothing.vertexIrradiance.size();
     rays_ += parallelForCounting(count, 16, cancel_, [&](std::size_t v, std::uint64_t& rays) {
         const Element at = smoothing.gatherSite(scene_, v, rays);
-        std::array<Color, 2> E;
+        SplitIrradiance E;
         if (!scene_.lights().empty())
             for (Side side : kBothSides)
-                E[sideIndex(side)] = LightIrradiance::at(
+                E.direct[sideIndex(side)] = LightIrradiance::at(
                     scene_, at.surfacePoint, at.surfaceNormal,
                     side == Side::Front ? at.normal : -at.normal, kAreaLightSamples,
                     hashValues(v, sideIndex(side), 0x76u), rays);
+        E.total = E.direct;
         for (std::uint32_t e = smoothing.siteLeaf(v); e != Element::kNone; e = parent_[e])
-            for (const Link& link : links_[e])
-                E[sideIndex(link.receiverSide)] += gatherFrom(
-                    at, link, link.source, hashValues(v, sideIndex(link.receiverSide)), rays);
+            for (const Link& link : links_[e]) {
+                const std::size_t side = sideIndex(link.receiverSide);
+                const Brought brought =
+                    gatherFrom(at, link, link.source, hashValues(v, side), rays);
+                E.total[side] += brought.total;
+                E.direct[side] += brought.direct;
+            }
         if (!clusters_.empty()) {
-            const std::array<Color, 2> fromClusters =
-                clusterLinksAt(at, smoothing.siteLeaf(v), clusterTransfers_);
-            for (std::size_t side = 0; side < 2; ++side)
-                E[side] += fromClusters[side];
+            const std::uint32_t leaf = smoothing.siteLeaf(v);
+            E += {clusterLinksAt(at, leaf, clusterTransfers_),
+                  clusterLinksAt(at, leaf, directTransfers)};
         }
-        smoothing.vertexIrradiance[v] = E;
+        smoothing.vertexIrradiance[v] = E.total;
+        smoothing.vertexDirect[v] = E.direct;
     });
 }
 

@@ -228,11 +228,19 @@ private:
     // The leaves' coverage from the links of the leaves and their ancestors, and, `resolved`,
     // their terms.
     void resolveAtLeaves(bool resolved);
+    // The irradiance at every vertex, and its part straight from the sampled emitters.
     void gatherAtVertices(VertexSmoothing& smoothing);
+    // What a link brings to a gather site: all of it, and the part its source emits.
+    struct Brought {
+        Color total, direct;
+    };
     // What a link brings to the gather site `at` from `source` (the link's source or one of its
     // descendants).
-    Color gatherFrom(const Element& at, const Link& link, std::uint32_t source, std::uint64_t key,
-                     std::uint64_t& rayCount) const;
+    Brought gatherFrom(const Element& at, const Link& link, std::uint32_t source, std::uint64_t key,
+                       std::uint64_t& rayCount) const;
+    // An element's emitted radiosity on one side where a render samples it (SplitIrradiance: the
+    // emissive surfaces of bounded shapes), else none.
+    Color emittedDirectly(std::uint32_t element, Side side) const;
     RadiosityStatistics statistics(std::size_t leaves) const;
     bool cancelled() const {
         return cancel_ && cancel_->load(std::memory_order_relaxed);

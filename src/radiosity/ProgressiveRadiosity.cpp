@@ -1,4 +1,5 @@
 #include "radiosity/ProgressiveRadiosity.h"
+#include "geometry/Shape.h"
 
 #include <atomic>
 #include <cmath>
@@ -7,6 +8,7 @@
 #include "radiosity/LightIrradiance.h"
 #include "radiosity/PatchMesher.h"
 #include "radiosity/RadiosityReporter.h"
+#include "radiosity/SplitIrradiance.h"
 #include "radiosity/SurfaceProbe.h"
 #include "radiosity/VertexSmoothing.h"
 #include "sampling/StratifiedPoint.h"
@@ -131,28 +133,36 @@ void ProgressiveRadiosity::shoot(std::uint32_t shooter, Side side, int rays,
     }
 }
 
-std::array<Color, 2> ProgressiveRadiosity::gather(const Element& e, std::uint64_t key,
-                                                  std::uint64_t& rayCount) const {
-    std::array<Color, 2> E = lightIrradiance(e, key, rayCount);
+SplitIrradiance ProgressiveRadiosity::gather(const Element& e, std::uint64_t key,
+                                             std::uint64_t& rayCount) const {
+    SplitIrradiance E;
+    E.direct = lightIrradiance(e, key, rayCount);
+    E.total = E.direct;
     for (std::uint32_t i = 0; i < mesh_.patches.size(); ++i) {
         if (i == e.patch) continue;
         const Patch& patch = mesh_.patches[i];
+        // What a render samples of the patch's emission: a patch that emits shot all of it with
+        // its first shot, so it is part of what it shot.
+        const bool sampled = patch.surface->isBounded();
         for (std::uint32_t k = patch.firstElement; k < patch.firstElement + patch.elementCount;
              ++k) {
             const Element& shooter = mesh_.elements[k];
             for (Side s : kBothSides) {
                 const Color& shot = shooter.shot[sideIndex(s)];
                 if (shot.isBlack()) continue;
+                const Color emitted = sampled ? kPi * patch.emission[sideIndex(s)] : Color(0);
                 // Shooters that shot much (the emitters, the brightest walls) make the shadows
                 // that show: they get all the rays.
                 const int raysEach = shot.average() * shooter.area >= kStrongShot * initialPower_
                                          ? settings_.visibilityRays
                                          : 1;
-                for (Side r : kBothSides)
-                    E[sideIndex(r)] +=
-                        shot * formFactor_.elementToTriangle(
-                                   e, r, mesh_.corners(shooter), patch, s, raysEach,
-                                   hashValues(k, sideIndex(s), key, sideIndex(r)), rayCount);
+                for (Side r : kBothSides) {
+                    const Color formFactor = formFactor_.elementToTriangle(
+                        e, r, mesh_.corners(shooter), patch, s, raysEach,
+                        hashValues(k, sideIndex(s), key, sideIndex(r)), rayCount);
+                    E.total[sideIndex(r)] += shot * formFactor;
+                    E.direct[sideIndex(r)] += emitted * formFactor;
+                }
             }
         }
     }
@@ -194,7 +204,7 @@ std::size_t ProgressiveRadiosity::subdivide(int level) {
     std::vector<std::array<Color, 2>> E(children.size());
     rays_ +=
         parallelForCounting(children.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
-            E[i] = gather(mesh_.elements[children[i]], children[i], rays);
+            E[i] = gather(mesh_.elements[children[i]], children[i], rays).total;
         });
     for (std::size_t i = 0; i < children.size(); ++i)
         mesh_.elements[children[i]].irradiance = E[i];
@@ -205,8 +215,9 @@ void ProgressiveRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
     const auto key = static_cast<std::uint64_t>(mesh_.elements.size());
     rays_ += parallelForCounting(
         smoothing.vertexIrradiance.size(), 16, cancel_, [&](std::size_t v, std::uint64_t& rays) {
-            smoothing.vertexIrradiance[v] =
-                gather(smoothing.gatherSite(scene_, v, rays), key + v, rays);
+            const SplitIrradiance E = gather(smoothing.gatherSite(scene_, v, rays), key + v, rays);
+            smoothing.vertexIrradiance[v] = E.total;
+            smoothing.vertexDirect[v] = E.direct;
         });
 }
 

@@ -11,6 +11,7 @@
 #include "radiosity/RadiosityMethod.h"
 #include "radiosity/RadiosityProgress.h"
 #include "radiosity/RadiositySolution.h"
+#include "radiosity/SplitIrradiance.h"
 #include "radiosity/VertexSmoothing.h"
 #include "scene/RadiositySettings.h"
 
@@ -68,10 +69,9 @@ private:
     // Splits the leaves of `level` whose irradiance jumps; returns how many were split.
     std::size_t subdivide(int level);
     // An element's irradiance gathered again: lights, then every shooting element's shot
-    // radiosity.
-    // `key` seeds its sample points.
-    std::array<Color, 2> gather(const Element& element, std::uint64_t key,
-                                std::uint64_t& rayCount) const;
+    // radiosity; and its part straight from the sampled emitters. `key` seeds its sample points.
+    SplitIrradiance gather(const Element& element, std::uint64_t key,
+                           std::uint64_t& rayCount) const;
     std::array<Color, 2> lightIrradiance(const Element& element, std::uint64_t key,
                                          std::uint64_t& rayCount) const;
 

@@ -15,8 +15,8 @@ namespace {
 
 constexpr char kMagic[16] = {'l', 'a', 'n', 'c', 'e', 'r', ' ', 'r',
                              'a', 'd', 'i', 'o', 's', 'i', 't', 'y'};
-// 2: the statistics count the links.
-constexpr std::uint32_t kVersion = 2;
+// 2: the statistics count the links; 3: the vertices' direct part.
+constexpr std::uint32_t kVersion = 3;
 
 template <typename T>
 void write(std::ostream& out, const T& value) {
@@ -28,11 +28,13 @@ void write(std::ostream& out, const T& value) {
 RadiositySolution::RadiositySolution(std::vector<std::array<Vec3, 3>> faces,
                                      std::vector<std::array<std::uint32_t, 3>> faceVertices,
                                      std::vector<std::array<Color, 2>> vertexIrradiance,
+                                     std::vector<std::array<Color, 2>> vertexDirect,
                                      float lookupDistance, std::uint64_t fingerprint,
                                      const RadiosityStatistics& statistics)
     : faces_(std::move(faces)),
       faceVertices_(std::move(faceVertices)),
       vertexIrradiance_(std::move(vertexIrradiance)),
+      vertexDirect_(std::move(vertexDirect)),
       lookupDistance_(lookupDistance),
       fingerprint_(fingerprint),
       statistics_(statistics) {
@@ -56,7 +58,7 @@ void RadiositySolution::buildLookup() {
 }
 
 std::optional<Color> RadiositySolution::irradiance(const Vec3& p, const Vec3& ng,
-                                                   const Vec3& towardsViewer) const {
+                                                   const Vec3& towardsViewer, Part part) const {
     // A short ray through p along the normal finds the element under p; of several (surfaces
     // closer together than the lookup distance), the one nearest p that faces the same way.
     const Ray probe{p + lookupDistance_ * ng, -ng};
@@ -85,8 +87,11 @@ std::optional<Color> RadiositySolution::irradiance(const Vec3& p, const Vec3& ng
     const bool elementFacesAsNg = dot(cross(f[1] - f[0], f[2] - f[0]), ng) >= 0;
     const std::size_t side = (dot(ng, towardsViewer) >= 0) == elementFacesAsNg ? 0 : 1;
     const auto& v = faceVertices_[*best];
-    return bestAt.b0 * vertexIrradiance_[v[0]][side] + bestAt.b1 * vertexIrradiance_[v[1]][side] +
-           bestAt.b2 * vertexIrradiance_[v[2]][side];
+    const auto at = [&](std::uint32_t vertex) {
+        const Color& total = vertexIrradiance_[vertex][side];
+        return part == Part::All ? total : total - vertexDirect_[vertex][side];
+    };
+    return bestAt.b0 * at(v[0]) + bestAt.b1 * at(v[1]) + bestAt.b2 * at(v[2]);
 }
 
 void RadiositySolution::save(const std::filesystem::path& path) const {
@@ -101,10 +106,11 @@ void RadiositySolution::save(const std::filesystem::path& path) const {
         write(out, statistics_);
         write(out, lookupDistance_);
         write(out, static_cast<std::uint64_t>(vertexIrradiance_.size()));
-        for (const auto& sides : vertexIrradiance_)
-            for (const Color& c : sides)
-                for (float channel : {c.r, c.g, c.b})
-                    write(out, channel);
+        for (std::size_t v = 0; v < vertexIrradiance_.size(); ++v)
+            for (const auto* sides : {&vertexIrradiance_[v], &vertexDirect_[v]})
+                for (const Color& c : *sides)
+                    for (float channel : {c.r, c.g, c.b})
+                        write(out, channel);
         write(out, static_cast<std::uint64_t>(faces_.size()));
         for (std::size_t i = 0; i < faces_.size(); ++i) {
             for (const Vec3& p : faces_[i])
@@ -151,14 +157,16 @@ RadiositySolution RadiositySolution::load(const std::filesystem::path& path) {
     s.fingerprint_ = reader.read<std::uint64_t>();
     s.statistics_ = reader.read<RadiosityStatistics>();
     s.lookupDistance_ = reader.readFinite();
-    const std::uint64_t vertexCount = reader.readCount(6 * sizeof(float));
+    const std::uint64_t vertexCount = reader.readCount(12 * sizeof(float));
     s.vertexIrradiance_.resize(vertexCount);
-    for (auto& sides : s.vertexIrradiance_)
-        for (Color& c : sides) {
-            c.r = reader.readFinite();
-            c.g = reader.readFinite();
-            c.b = reader.readFinite();
-        }
+    s.vertexDirect_.resize(vertexCount);
+    for (std::size_t v = 0; v < vertexCount; ++v)
+        for (auto* sides : {&s.vertexIrradiance_[v], &s.vertexDirect_[v]})
+            for (Color& c : *sides) {
+                c.r = reader.readFinite();
+                c.g = reader.readFinite();
+                c.b = reader.readFinite();
+            }
     const std::uint64_t faceCount = reader.readCount(9 * sizeof(float) + 3 * sizeof(std::uint32_t));
     s.faces_.resize(faceCount);
     s.faceVertices_.resize(faceCount);

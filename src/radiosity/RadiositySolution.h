@@ -14,21 +14,27 @@
 namespace lancer {
 
 // A solved radiosity solution, independent of the view: the leaf elements with, at each of their
-// corners, the irradiance on both sides, averaged over the elements sharing the corner, for
-// smooth (Gouraud) interpolation. It is saved to and loaded from files, which hold the
-// fingerprint of the scene they were solved for.
+// corners, the irradiance on both sides, for smooth (Gouraud) interpolation, and the part of it
+// straight from the sampled emitters (SplitIrradiance), so that a render may compute that part
+// itself with shadow rays. It is saved to and loaded from files, which hold the fingerprint of
+// the scene they were solved for.
 class RadiositySolution {
 public:
     RadiositySolution() = default;
     RadiositySolution(std::vector<std::array<Vec3, 3>> faces,
                       std::vector<std::array<std::uint32_t, 3>> faceVertices,
-                      std::vector<std::array<Color, 2>> vertexIrradiance, float lookupDistance,
+                      std::vector<std::array<Color, 2>> vertexIrradiance,
+                      std::vector<std::array<Color, 2>> vertexDirect, float lookupDistance,
                       std::uint64_t fingerprint, const RadiosityStatistics& statistics);
+
+    // What irradiance() gives: all of it, or all but the sampled emitters' direct light.
+    enum class Part { All, Indirect };
 
     // The irradiance at p, on a surface of geometric normal ng, on the side `towardsViewer`
     // points to: interpolated over the element found under p within the lookup distance along
     // ng. Nothing when no element is there (beyond a clipped plane, a shape not meshed).
-    std::optional<Color> irradiance(const Vec3& p, const Vec3& ng, const Vec3& towardsViewer) const;
+    std::optional<Color> irradiance(const Vec3& p, const Vec3& ng, const Vec3& towardsViewer,
+                                    Part part = Part::All) const;
 
     std::size_t faceCount() const { return faces_.size(); }
     std::uint64_t fingerprint() const { return fingerprint_; }
@@ -51,6 +57,7 @@ private:
     std::vector<std::array<Vec3, 3>> faces_;  // in the lookup BVH's leaf order once built
     std::vector<std::array<std::uint32_t, 3>> faceVertices_;
     std::vector<std::array<Color, 2>> vertexIrradiance_;  // front, back
+    std::vector<std::array<Color, 2>> vertexDirect_;      // its direct part
     float lookupDistance_ = 0;
     std::uint64_t fingerprint_ = 0;
     RadiosityStatistics statistics_;

@@ -60,6 +60,7 @@ VertexSmoothing::VertexSmoothing(const RadiosityMesh& mesh, std::vector<std::uin
     for (std::size_t v = 0; v < weights.size(); ++v)
         for (Color& c : vertexIrradiance[v])
             c /= weights[v];
+    vertexDirect.resize(vertexIrradiance.size());
 }
 
 Element VertexSmoothing::gatherSite(const Scene& scene, std::size_t vertex,
@@ -98,7 +99,7 @@ RadiositySolution VertexSmoothing::solution(float lookupDistance, std::uint64_t 
     for (std::uint32_t e : leaves_)
         faces.push_back(mesh_.corners(mesh_.elements[e]));
     return RadiositySolution(std::move(faces), std::move(faceVertices), std::move(vertexIrradiance),
-                             lookupDistance, fingerprint, statistics);
+                             std::move(vertexDirect), lookupDistance, fingerprint, statistics);
 }
 
 }  // namespace lancer

@@ -26,8 +26,10 @@ public:
 
     // Per leaf (in the order given), its corners' vertices.
     std::vector<std::array<std::uint32_t, 3>> faceVertices;
-    // Per vertex, its irradiance on the front and back.
+    // Per vertex, its irradiance on the front and back, and the part of it straight from the
+    // sampled emitters (SplitIrradiance; none until a solver gathers it at the vertices).
     std::vector<std::array<Color, 2>> vertexIrradiance;
+    std::vector<std::array<Color, 2>> vertexDirect;
 
     // Where to gather a vertex's irradiance: a copy of the brightest leaf around it (so that a
     // corner on a contact line takes the visible side's value), moved 2% of the way from the

@@ -56,21 +56,30 @@ void expectClosedBoxFurnace(bool clusters, const std::string& moreObjects = "") 
         {Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
         {Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)},
     }};
+    // The direct part (every wall's emission, pi Le, seen over the whole hemisphere) aside, the
+    // rest is the reflected light, rho pi Le / (1 - rho).
+    const float indirect = kAlbedo * expected;
     int points = 0;
-    float worst = 0;
+    float worst = 0, worstIndirect = 0;
     for (const auto& [origin, u, v] : walls) {
         const Vec3 n = cross(u, v);
         const Vec3 inside = dot(n, Vec3(0.5f) - origin) > 0 ? n : -n;
         for (float s : {0.01f, 0.1f, 0.3f, 0.5f, 0.77f, 0.99f})
             for (float t : {0.01f, 0.2f, 0.45f, 0.63f, 0.9f, 0.99f}) {
-                const auto E = solution->irradiance(origin + s * u + t * v, n, inside);
-                ASSERT_TRUE(E);
+                const Vec3 p = origin + s * u + t * v;
+                const auto E = solution->irradiance(p, n, inside);
+                const auto reflected =
+                    solution->irradiance(p, n, inside, RadiositySolution::Part::Indirect);
+                ASSERT_TRUE(E && reflected);
                 worst = std::max(worst, std::abs(E->r - expected) / expected);
+                worstIndirect =
+                    std::max(worstIndirect, std::abs(reflected->r - indirect) / indirect);
                 ++points;
             }
     }
     EXPECT_EQ(points, 216);
     EXPECT_LT(worst, 0.01f);
+    EXPECT_LT(worstIndirect, 0.01f);
 }
 
 TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
@@ -89,6 +98,32 @@ TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceWithWallsGivenTwice) {
 
 TEST(HierarchicalRadiosityTest, ClosedBoxFurnaceWithWallsGivenTwiceAndClusters) {
     expectClosedBoxFurnace(true, kRepeatedWalls);
+}
+
+// The direct part is what a render samples: a bounded emitter's light, not an emissive infinite
+// plane's (which the render does not sample). A white square faces a black emitter (nothing
+// reflected back): all its light is direct from an emissive square, none from an emissive plane.
+TEST(HierarchicalRadiosityTest, TheDirectPartIsTheSampledEmittersLight) {
+    const std::string receiver =
+        square(Vec3(0, 1, 0), Vec3(1, 0, 0), Vec3(0, 0, 1));  // facing down
+    for (const bool plane : {false, true}) {
+        const std::string emitter =
+            plane ? R"({"type": "plane", "point": [0, 0.6, 0], "normal": [0, 1, 0],
+                        "material": "lamp"})"
+                  : square(Vec3(-1, 0.6f, -1), Vec3(0, 0, 3), Vec3(3, 0, 0), "lamp");  // up
+        Scene scene = loadScene(receiver + ", " + emitter,
+                                R"(, "radiosity": {"patch_size": 0.5, )" + kHierarchical + "}");
+        HierarchicalRadiosity solver(scene);
+        const std::optional<RadiositySolution> solution = solver.solve({}, nullptr);
+        ASSERT_TRUE(solution);
+        const Vec3 p(0.5f, 1, 0.5f), down(0, -1, 0);
+        const auto all = solution->irradiance(p, down, down);
+        const auto reflected =
+            solution->irradiance(p, down, down, RadiositySolution::Part::Indirect);
+        ASSERT_TRUE(all && reflected);
+        EXPECT_GT(all->r, 0.1f) << "plane " << plane;
+        EXPECT_NEAR(reflected->r, plane ? all->r : 0, 1e-6f) << "plane " << plane;
+    }
 }
 
 TEST(HierarchicalRadiosityTest, AFaceGivenTwiceIsMeshedOnceUnlessItEmitsMore) {

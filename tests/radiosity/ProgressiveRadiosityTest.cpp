@@ -36,10 +36,15 @@ TEST(ProgressiveRadiosityTest, ClosedBoxFurnaceGivesTheGeometricSeries) {
         EXPECT_NEAR(e.irradiance[0].r, expected, 0.005f * expected);
         EXPECT_NEAR(e.irradiance[1].r, 0, 1e-6f);  // nothing outside
     }
-    // The solution's interpolated value, at the centre of the floor seen from above.
-    const auto E = solution.irradiance(Vec3(0.5f, 0, 0.5f), Vec3(0, 1, 0), Vec3(0, 1, 0));
-    ASSERT_TRUE(E);
+    // The solution's interpolated value, at the centre of the floor seen from above, and its
+    // part not straight from the emitters (the walls' pi Le over the whole hemisphere).
+    const Vec3 up(0, 1, 0);
+    const auto E = solution.irradiance(Vec3(0.5f, 0, 0.5f), up, up);
+    const auto reflected =
+        solution.irradiance(Vec3(0.5f, 0, 0.5f), up, up, RadiositySolution::Part::Indirect);
+    ASSERT_TRUE(E && reflected);
     EXPECT_NEAR(E->g, expected, 0.005f * expected);
+    EXPECT_NEAR(reflected->g, kAlbedo * expected, 0.005f * expected);
 }
 
 TEST(ProgressiveRadiosityTest, UnshotPowerFallsMonotonicallyBelowTheThreshold) {
