@@ -38,6 +38,9 @@ SETTINGS: list[tuple[str, dict]] = [
     ("hierarchical, refinement_tolerance 0.01", {"method": "hierarchical", "refinement_tolerance": 0.01}),
     ("hierarchical, visibility_rays 16", {"method": "hierarchical", "visibility_rays": 16}),
     ("hierarchical, clusters", {"method": "hierarchical", "clusters": True}),
+    ("hierarchical, direct_samples 4", {"method": "hierarchical", "direct_samples": 4}),
+    ("hierarchical, direct_samples 16", {"method": "hierarchical", "direct_samples": 16}),
+    ("progressive, direct_samples 16", {"direct_samples": 16}),
 ]
 
 

@@ -20,10 +20,11 @@ namespace lancer {
 
 RadiosityIntegrator::RadiosityIntegrator(const Scene& scene, int maxDepth,
                                          std::shared_ptr<const RadiositySolution> solution,
-                                         int finalGather)
+                                         int finalGather, int directSamples)
     : WhittedIntegrator(scene, maxDepth, Bsdf::Weights::EnergyConserving),
       solution_(std::move(solution)),
       finalGather_(finalGather),
+      directSamples_(directSamples),
       emitters_(scene) {}
 
 std::unique_ptr<Integrator> RadiosityIntegrator::create(const Scene& scene,
@@ -35,7 +36,7 @@ std::unique_ptr<Integrator> RadiosityIntegrator::create(const Scene& scene,
     return std::make_unique<RadiosityIntegrator>(
         scene, scene.settings().maxDepth,
         std::make_shared<const RadiositySolution>(std::move(*solution)),
-        scene.settings().radiosity.finalGather);
+        scene.settings().radiosity.finalGather, scene.settings().radiosity.directSamples);
 }
 
 Color RadiosityIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
@@ -45,9 +46,15 @@ Color RadiosityIntegrator::localShading(const Hit& hit, const Bsdf& bsdf, const 
     Color L;
     const Color kd = bsdf.diffuseReflectance();
     if (!kd.isBlack()) {
-        const Color E = finalGather_ > 0 ? gatheredIrradiance(hit, n, front ? hit.ng : -hit.ng,
-                                                              sampler, rayCount)
-                                         : solutionIrradiance(hit, n, wo, sampler, rayCount);
+        Color E;
+        if (finalGather_ > 0)
+            E = gatheredIrradiance(hit, n, front ? hit.ng : -hit.ng, sampler, rayCount);
+        else if (directSamples_ > 0)
+            E = solution_->irradiance(hit.p, hit.ng, wo, RadiositySolution::Part::Indirect)
+                    .value_or(Color(0)) +
+                directIrradiance(hit, n, directSamples_, sampler, rayCount);
+        else
+            E = solutionIrradiance(hit, n, wo, sampler, rayCount);
         L += kd * E / kPi;
     }
     if (bsdf.hasGlossyLobe()) L += highlights(hit, bsdf, n, wo, rayCount);
@@ -93,9 +100,14 @@ Color RadiosityIntegrator::gatheredIrradiance(const Hit& hit, const Vec3& n, con
         sum += gatherRadiance(hit.spawnRay(wi), 0, sampler, rayCount);
     }
     // Cosine-distributed directions: E = pi x the mean radiance.
-    const Color emitted = sampledEmitters(hit, n, finalGather_, true, sampler, rayCount,
-                                          [](const Vec3&) { return Color(1); });
-    return emitted + sum * (kPi / static_cast<float>(finalGather_));
+    return directIrradiance(hit, n, finalGather_, sampler, rayCount) +
+           sum * (kPi / static_cast<float>(finalGather_));
+}
+
+Color RadiosityIntegrator::directIrradiance(const Hit& hit, const Vec3& n, int count,
+                                            Sampler& sampler, std::uint64_t& rayCount) const {
+    return sampledEmitters(hit, n, count, true, sampler, rayCount,
+                           [](const Vec3&) { return Color(1); });
 }
 
 template <typename Response>

@@ -24,10 +24,15 @@ namespace lancer {
 // diffuse hit is not interpolated but computed there: N samples of the emitters (lights and
 // emissive surfaces, as the path tracer picks them) with shadow rays, plus what N
 // cosine-distributed rays find the surfaces they hit reflect, from the solution at those hits.
+// With N direct samples (and no final gather), the irradiance at an eye ray's diffuse hit is the
+// solution's indirect part, interpolated, plus the emitters' direct light computed there from N
+// samples with shadow rays: shadows as sharp as the ray tracer's, where the solution's elements
+// would spread them over their corners.
 class RadiosityIntegrator final : public WhittedIntegrator {
 public:
     RadiosityIntegrator(const Scene& scene, int maxDepth,
-                        std::shared_ptr<const RadiositySolution> solution, int finalGather = 0);
+                        std::shared_ptr<const RadiositySolution> solution, int finalGather = 0,
+                        int directSamples = 0);
     // With the solution the setup gives (by default, solved for the scene); null when stopped.
     static std::unique_ptr<Integrator> create(const Scene& scene, const IntegratorSetup& setup);
 
@@ -48,6 +53,9 @@ private:
     // where it has no element.
     Color solutionIrradiance(const Hit& hit, const Vec3& n, const Vec3& wo, Sampler& sampler,
                              std::uint64_t& rayCount) const;
+    // The irradiance from `count` samples of the emitters (lights too) with shadow rays.
+    Color directIrradiance(const Hit& hit, const Vec3& n, int count, Sampler& sampler,
+                           std::uint64_t& rayCount) const;
     // The final gather's irradiance on the side n faces of the surface whose geometric normal on
     // that side is ng.
     Color gatheredIrradiance(const Hit& hit, const Vec3& n, const Vec3& ng, Sampler& sampler,
@@ -74,6 +82,7 @@ private:
 
     std::shared_ptr<const RadiositySolution> solution_;
     int finalGather_;
+    int directSamples_;
     LightSampler emitters_;
 };
 

@@ -729,7 +729,7 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
     checkKeys(node, "\"radiosity\"",
               {"method", "patch_size", "element_size", "threshold", "max_shots",
                "subdivision_levels", "subdivision_tolerance", "visibility_rays",
-               "refinement_tolerance", "clusters", "final_gather"});
+               "refinement_tolerance", "clusters", "final_gather", "direct_samples"});
     RadiositySettings& r = scene_.settings().radiosity;
     if (node.has("method"))
         r.method =
@@ -761,6 +761,11 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
         r.finalGather = readInt(node["final_gather"], 0);
         if (r.finalGather > 4096)
             fail(node["final_gather"], "\"final_gather\" must be at most 4096");
+    }
+    if (node.has("direct_samples")) {
+        r.directSamples = readInt(node["direct_samples"], 0);
+        if (r.directSamples > 4096)
+            fail(node["direct_samples"], "\"direct_samples\" must be at most 4096");
     }
 }
 

@@ -25,6 +25,9 @@ struct RadiositySettings {
     // The render, not the solution: rays gathering the solution at each eye ray's diffuse hit
     // (0: the solution interpolated there).
     int finalGather = 0;
+    // The render: emitter samples computing the direct light at each eye ray's diffuse hit with
+    // shadow rays, the solution giving the rest (0: all of it from the solution).
+    int directSamples = 0;
 };
 
 }  // namespace lancer
