@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 
@@ -227,27 +228,28 @@ Image unboundedCornellReference() {
     return loadImage(fs::path(LANCER_CORNELL_DIR) / "mitsuba-path-unbounded-16384spp.exr");
 }
 
+// Whether a pixel lies within 2 pixels of the lamp (a pixel of the reference at 1 or more): the
+// lamp's own edge pixels measure anti-aliasing (the references have 16384 samples per pixel), not
+// lighting.
+bool nearTheLamp(const Image& reference, int x, int y) {
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            const int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= reference.width || ny >= reference.height) continue;
+            const auto& p = reference.at(nx, ny);
+            if (std::max({p[0], p[1], p[2]}) >= 1) return true;
+        }
+    return false;
+}
+
 // The relative RMSE, sqrt(mean (a - b)^2) / mean(b), over the pixels farther than 2 pixels from
-// the lamp: the lamp's own edge pixels measure anti-aliasing (the reference has 16384 samples per
-// pixel), not lighting.
+// the lamp.
 double relativeRmseOffTheLamp(const Image& image, const Image& reference) {
-    const auto isLamp = [&](int x, int y) {
-        const auto& p = reference.at(x, y);
-        return std::max({p[0], p[1], p[2]}) >= 1;
-    };
     double squared = 0, sum = 0;
     std::size_t count = 0;
     for (int y = 0; y < reference.height; ++y)
         for (int x = 0; x < reference.width; ++x) {
-            bool nearLamp = false;
-            for (int dy = -2; dy <= 2; ++dy)
-                for (int dx = -2; dx <= 2; ++dx) {
-                    const int nx = x + dx, ny = y + dy;
-                    if (nx >= 0 && ny >= 0 && nx < reference.width && ny < reference.height &&
-                        isLamp(nx, ny))
-                        nearLamp = true;
-                }
-            if (nearLamp) continue;
+            if (nearTheLamp(reference, x, y)) continue;
             for (int c = 0; c < 3; ++c) {
                 const double d = image.at(x, y)[c] - reference.at(x, y)[c];
                 squared += d * d;
@@ -256,6 +258,27 @@ double relativeRmseOffTheLamp(const Image& image, const Image& reference) {
             count += 3;
         }
     return std::sqrt(squared / static_cast<double>(count)) / (sum / static_cast<double>(count));
+}
+
+// The given percentile of |a - b| / (b + 1% of b's mean), on the mean of the channels, over the
+// pixels farther than 2 pixels from the lamp.
+double percentileOfRelativeErrorOffTheLamp(const Image& image, const Image& reference,
+                                           double fraction) {
+    const auto mean = [](const Image::Rgb& p) { return (p[0] + p[1] + p[2]) / 3.0; };
+    double sum = 0;
+    for (int y = 0; y < reference.height; ++y)
+        for (int x = 0; x < reference.width; ++x)
+            sum += mean(reference.at(x, y));
+    const double floor = 0.01 * sum / (reference.width * reference.height);
+    std::vector<double> errors;
+    for (int y = 0; y < reference.height; ++y)
+        for (int x = 0; x < reference.width; ++x)
+            if (!nearTheLamp(reference, x, y)) {
+                const double b = mean(reference.at(x, y));
+                errors.push_back(std::abs(mean(image.at(x, y)) - b) / (b + floor));
+            }
+    std::sort(errors.begin(), errors.end());
+    return errors[static_cast<std::size_t>(fraction * static_cast<double>(errors.size() - 1))];
 }
 
 TEST(RadiosityRender, CornellBoxAgainstMitsuba) {
@@ -309,6 +332,53 @@ TEST(RadiosityRender, HierarchicalCornellBoxWithDirectSamplesAgainstMitsuba) {
               << error << '\n';
     EXPECT_LT(error, 0.030);
 }
+
+// Issue 12's quality measure on a small scene: McGuire's cornell-original at 64 x 64 (16 spp)
+// against lancer's path tracer at 16384 spp without a depth limit (tests/radiosity/data), over
+// the pixels more than 2 pixels from the lamp (the box's surfaces are all diffuse): the relative
+// RMSE, and the 99th percentile of the per-pixel relative error |a - b| / (b + 1% of b's mean)
+// on the mean of the channels (blotches, dots and misplaced shadows fail it). The aims: 3% and
+// 10%. Measured (2026-12-06): hierarchical defaults 2.51% and 9.8%, with 16 direct samples 2.48%
+// and 7.9% (before McGuire's repeated faces were meshed once, the floor beside the short block
+// was 10-35% too light). The reference's own noise, scaled from two 4096-spp renders at 200 x 200,
+// is about 1% at that percentile.
+struct QualityCase {
+    std::string name;
+    json radiosity;
+    double rmseBound, percentileBound;
+};
+
+class RadiosityQuality : public testing::TestWithParam<QualityCase> {};
+
+TEST_P(RadiosityQuality, OnCornellOriginal) {
+    const fs::path source(LANCER_SOURCE_DIR);
+    json scene =
+        json::parse(readFile(source / "scenes" / "cornell-original.json"), nullptr, true, true);
+    scene["objects"][0]["file"] =
+        (source / "scenes" / scene["objects"][0]["file"].get<std::string>()).string();
+    scene["render"].update(
+        {{"integrator", "radiosity"}, {"width", 64}, {"height", 64}, {"spp", 16}});
+    scene["radiosity"] = GetParam().radiosity;
+    const Image image = renderScene(scene).image;
+    const Image reference = loadImage(source / "tests" / "radiosity" / "data" /
+                                      "cornell-original-path-64-16384spp.pfm");
+    ASSERT_EQ(image.width, reference.width);
+    const double rmse = relativeRmseOffTheLamp(image, reference);
+    EXPECT_LT(rmse, GetParam().rmseBound);
+    const double percentile = percentileOfRelativeErrorOffTheLamp(image, reference, 0.99);
+    EXPECT_LT(percentile, GetParam().percentileBound);
+    std::cout << GetParam().name << ": relative RMSE " << rmse << ", 99th percentile " << percentile
+              << '\n';
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Settings, RadiosityQuality,
+    testing::Values(QualityCase{"HierarchicalDefaults", {{"method", "hierarchical"}}, 0.03, 0.11},
+                    QualityCase{"HierarchicalWithDirectSamples",
+                                {{"method", "hierarchical"}, {"direct_samples", 16}},
+                                0.03,
+                                0.10}),
+    CaseName{});
 
 // A scene file and its views, in a folder of their own.
 struct SolutionFiles {
