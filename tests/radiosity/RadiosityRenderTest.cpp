@@ -36,12 +36,17 @@ void expectFurnace(const Image& image, double expected) {
             ASSERT_NEAR(channel, expected, 0.01 * expected);
 }
 
-TEST(RadiosityRender, ClosedSphereFurnace) {
+// Inside a sphere of albedo 0.7 emitting 0.3: 0.3 / (1 - 0.7) everywhere.
+json insideAGlowingSphere() {
     json scene = sceneWith(
         R"({"type": "sphere", "center": [0.5, 0.5, 0.5], "radius": 1, "material": "glow"})",
         R"({"diffuse": 0.7, "emission": 0.3})");
     scene["radiosity"]["patch_size"] = 1;
-    expectFurnace(renderScene(scene).image, 0.3 / (1 - 0.7));
+    return scene;
+}
+
+TEST(RadiosityRender, ClosedSphereFurnace) {
+    expectFurnace(renderScene(insideAGlowingSphere()).image, 0.3 / (1 - 0.7));
 }
 
 TEST(RadiosityRender, ClosedBoxFurnace) {
@@ -54,10 +59,7 @@ TEST(RadiosityRender, ClosedBoxFurnace) {
 // The final gather from inside an emissive sphere: sampling the sphere by area from a point of
 // it, and gathering the uniform solution, are both exact, so the furnace holds pixel by pixel.
 TEST(RadiosityRender, ClosedSphereFurnaceWithAFinalGather) {
-    json scene = sceneWith(
-        R"({"type": "sphere", "center": [0.5, 0.5, 0.5], "radius": 1, "material": "glow"})",
-        R"({"diffuse": 0.7, "emission": 0.3})");
-    scene["radiosity"]["patch_size"] = 1;
+    json scene = insideAGlowingSphere();
     scene["radiosity"]["final_gather"] = 8;
     expectFurnace(renderScene(scene).image, 0.3 / (1 - 0.7));
 }
@@ -67,10 +69,7 @@ TEST(RadiosityRender, ClosedSphereFurnaceWithAFinalGather) {
 // holds pixel by pixel (with the direct part counted twice or not at all it would be off by pi Le
 // of the 3.3 pi Le).
 TEST(RadiosityRender, ClosedSphereFurnaceWithDirectSamples) {
-    json scene = sceneWith(
-        R"({"type": "sphere", "center": [0.5, 0.5, 0.5], "radius": 1, "material": "glow"})",
-        R"({"diffuse": 0.7, "emission": 0.3})");
-    scene["radiosity"]["patch_size"] = 1;
+    json scene = insideAGlowingSphere();
     scene["radiosity"]["direct_samples"] = 4;
     expectFurnace(renderScene(scene).image, 0.3 / (1 - 0.7));
 }
