@@ -2,7 +2,7 @@
 
 #include <memory>
 
-#include "integrators/LightSampler.h"
+#include "scene/LightSampler.h"
 #include "render/Integrator.h"
 
 namespace lancer {

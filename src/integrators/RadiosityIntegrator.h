@@ -3,7 +3,7 @@
 #include <memory>
 #include <optional>
 
-#include "integrators/LightSampler.h"
+#include "scene/LightSampler.h"
 #include "integrators/WhittedIntegrator.h"
 #include "radiosity/RadiositySolution.h"
 

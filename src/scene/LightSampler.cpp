@@ -1,4 +1,4 @@
-#include "integrators/LightSampler.h"
+#include "scene/LightSampler.h"
 
 #include <algorithm>
 #include <cmath>
