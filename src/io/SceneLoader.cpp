@@ -726,10 +726,11 @@ void SceneLoader::Reader::loadAdaptive(const Node& render, const Node& node) {
 
 void SceneLoader::Reader::loadRadiosity(const Node& node) {
     requireObject(node, "\"radiosity\"");
-    checkKeys(node, "\"radiosity\"",
-              {"method", "patch_size", "element_size", "threshold", "max_shots",
-               "subdivision_levels", "subdivision_tolerance", "visibility_rays",
-               "refinement_tolerance", "clusters", "final_gather", "direct_samples"});
+    checkKeys(
+        node, "\"radiosity\"",
+        {"method", "patch_size", "element_size", "threshold", "max_shots", "subdivision_levels",
+         "subdivision_tolerance", "visibility_rays", "refinement_tolerance", "clusters",
+         "glossy_samples", "final_gather", "direct_samples"});
     RadiositySettings& r = scene_.settings().radiosity;
     if (node.has("method"))
         r.method =
@@ -761,6 +762,11 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
         r.finalGather = readInt(node["final_gather"], 0);
         if (r.finalGather > 4096)
             fail(node["final_gather"], "\"final_gather\" must be at most 4096");
+    }
+    if (node.has("glossy_samples")) {
+        r.glossySamples = readInt(node["glossy_samples"], 0);
+        if (r.glossySamples > 4096)
+            fail(node["glossy_samples"], "\"glossy_samples\" must be at most 4096");
     }
     if (node.has("direct_samples")) {
         r.directSamples = readInt(node["direct_samples"], 0);

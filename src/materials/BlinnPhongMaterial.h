@@ -57,6 +57,7 @@ public:
     void addLobes(const Hit& hit, Bsdf& bsdf) const override;
     Color diffuseReflectance(const Hit& hit) const override;
     bool reflectsDiffusely() const override;
+    bool reflectsGlossily() const override { return !parameters_.specular.isBlack(); }
     Color ambientReflectance(const Hit& hit) const override;
     Color emission(const Hit& hit) const override;
     Color emission() const override;

@@ -27,6 +27,9 @@ public:
     // Whether diffuseReflectance can be other than black anywhere, which decides whether the
     // radiosity solver meshes the surface.
     virtual bool reflectsDiffusely() const = 0;
+    // Whether the BSDF can have a glossy lobe (Bsdf::glossyLobeCount), whose reflection of the
+    // diffuse surfaces radiosity's glossy transport follows.
+    virtual bool reflectsGlossily() const { return false; }
     // Whitted's ambient coefficient ka at the hit, which multiplies the scene's ambient light.
     virtual Color ambientReflectance(const Hit& hit) const { return diffuseReflectance(hit); }
     // The radiance emitted at the hit (a Lambertian emitter), and its mean over the surface (the

@@ -77,6 +77,8 @@ constexpr float kNearSpread = 64;
 // links over kFewCandidates is the last as well.
 constexpr int kMaxRefinementPasses = 3;
 constexpr std::size_t kFewCandidates = 1000;
+// Rounds of light through glossy reflections, each from the solution the one before left.
+constexpr int kGlossyRounds = 2;
 
 float longestEdge(const std::array<Vec3, 3>& t) {
     return std::max({length(t[1] - t[0]), length(t[2] - t[1]), length(t[0] - t[2])});
@@ -118,9 +120,12 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene)
     RadiositySettings roots = settings_;
     roots.patchSize = roots.elementSize = patchSize_;
     mesh_ = PatchMesher(scene, roots).mesh();
-    fingerprint_ =
+    fingerprint_ = hashValues(
         hashValues(mesh_.fingerprint(scene, settings_), 0x4852u,  // "HR"
-                   std::bit_cast<std::uint32_t>(settings_.refinementTolerance), settings_.clusters);
+                   std::bit_cast<std::uint32_t>(settings_.refinementTolerance), settings_.clusters),
+        scene.hasGlossyMaterial() ? settings_.glossySamples : 0);
+    if (scene.hasGlossyMaterial() && settings_.glossySamples > 0)
+        glossy_.emplace(scene, settings_.glossySamples);
     for (const Patch& p : mesh_.patches)
         for (std::uint32_t e = p.firstElement; e < p.firstElement + p.elementCount; ++e)
             roots_.push_back(e);
@@ -143,6 +148,7 @@ void HierarchicalRadiosity::grow() {
     parent_.resize(n, Element::kNone);
     emitted_.resize(n);
     fromLights_.resize(n);
+    fromGlossy_.resize(n);
     lightSpread_.resize(n);
     radiosity_.resize(n);
     gathered_.resize(n);
@@ -784,8 +790,8 @@ double HierarchicalRadiosity::iteration(bool resolved) {
             // (within the refinement's error), what they bring is scaled back, so that no
             // element gains power and the iterations converge.
             const float coverage = coverage_[leaf][side];
-            const Color total =
-                (coverage > 1 ? E[side] / coverage : E[side]) + fromLights_[leaf][side];
+            const Color total = (coverage > 1 ? E[side] / coverage : E[side]) +
+                                fromLights_[leaf][side] + fromGlossy_[leaf][side];
             element.irradiance[side] = total;
             B[i][side] = emitted_[leaf][side] + element.reflectance * total;
         }
@@ -871,6 +877,18 @@ Color HierarchicalRadiosity::emittedDirectly(std::uint32_t element, Side side) c
     return patch.surface->isBounded() ? emitted_[element][sideIndex(side)] : Color(0);
 }
 
+void HierarchicalRadiosity::gatherThroughGlossy(int round) {
+    const RadiositySolution current = snapshot();
+    const std::vector<std::uint32_t> leaves = mesh_.leaves();
+    rays_ +=
+        parallelForCounting(leaves.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
+            const Element& e = mesh_.elements[leaves[i]];
+            const bool reflects = e.reflectance.maxComponent() > 0;
+            fromGlossy_[leaves[i]] = glossy_->at(e, {reflects, reflects}, current,
+                                                 hashValues(leaves[i], round, 0x6c6fu), rays);
+        });
+}
+
 void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
     // What the cluster links bring of the sampled emitters' light alone.
     ColorArrays directTransfers;
@@ -891,17 +909,25 @@ void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
             directTransfers.set(linkPosition_[i], link.visibility * delivered);
         });
     }
+    const std::optional<RadiositySolution> current =
+        glossy_ ? std::optional<RadiositySolution>(snapshot()) : std::nullopt;
     const std::size_t count = smoothing.vertexIrradiance.size();
     rays_ += parallelForCounting(count, 16, cancel_, [&](std::size_t v, std::uint64_t& rays) {
         const Element at = smoothing.gatherSite(scene_, v, rays);
         SplitIrradiance E;
+        if (glossy_) {
+            const bool reflects = at.reflectance.maxComponent() > 0;
+            E.total = glossy_->at(at, {reflects, reflects}, *current, hashValues(v, 0x76u, 0x6c6fu),
+                                  rays);
+        }
         if (!scene_.lights().empty())
             for (Side side : kBothSides)
                 E.direct[sideIndex(side)] = LightIrradiance::at(
                     scene_, at.surfacePoint, at.surfaceNormal,
                     side == Side::Front ? at.normal : -at.normal, kAreaLightSamples,
                     hashValues(v, sideIndex(side), 0x76u), rays);
-        E.total = E.direct;
+        for (std::size_t side = 0; side < 2; ++side)
+            E.total[side] += E.direct[side];
         for (std::uint32_t e = smoothing.siteLeaf(v); e != Element::kNone; e = parent_[e])
             for (const Link& link : links_[e]) {
                 const std::size_t side = sideIndex(link.receiverSide);
@@ -981,11 +1007,19 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
 
     // The leaves' radiosities once more, from their own form factors to the links' sources
     // (unless the terms would take too much memory).
-    if (leafTermCount() <= kMostLeafTerms) {
-        phase = RadiosityProgress::Phase::Iterating;
+    const bool resolved = leafTermCount() <= kMostLeafTerms;
+    phase = RadiosityProgress::Phase::Iterating;
+    if (resolved) {
         resolveAtLeaves(true);
         if (!iterate(true, carryOn)) return std::nullopt;
     }
+    // The light through glossy reflections, from the solution as it stands, then iterated with
+    // the rest; twice, so that it is itself reflected by the glossy surfaces.
+    if (glossy_)
+        for (int round = 0; round < kGlossyRounds; ++round) {
+            gatherThroughGlossy(round);
+            if (cancelled() || !iterate(resolved, carryOn)) return std::nullopt;
+        }
 
     phase = RadiosityProgress::Phase::Gathering;
     if (!carryOn()) return std::nullopt;

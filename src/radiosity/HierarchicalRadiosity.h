@@ -10,6 +10,7 @@
 
 #include "radiosity/ClusterHierarchy.h"
 #include "radiosity/FormFactor.h"
+#include "radiosity/GlossyTransport.h"
 #include "radiosity/RadiosityMesh.h"
 #include "radiosity/RadiosityMethod.h"
 #include "scene/RadiositySettings.h"
@@ -230,6 +231,8 @@ private:
     void resolveAtLeaves(bool resolved);
     // The irradiance at every vertex, and its part straight from the sampled emitters.
     void gatherAtVertices(VertexSmoothing& smoothing);
+    // fromGlossy_ at every leaf, from the solution as it stands (`round` seeds the samples).
+    void gatherThroughGlossy(int round);
     // What a link brings to a gather site: all of it, and the part its source emits.
     struct Brought {
         Color total, direct;
@@ -257,7 +260,10 @@ private:
     std::vector<std::uint32_t> parent_;
     std::vector<std::array<Color, 2>> emitted_;     // pi Le
     std::vector<std::array<Color, 2>> fromLights_;  // irradiance from the scene's lights
-    std::vector<float> lightSpread_;                // its spread over the element (W/m^2)
+    // Irradiance through glossy reflections (GlossyTransport), from the last gatherThroughGlossy.
+    std::vector<std::array<Color, 2>> fromGlossy_;
+    std::optional<GlossyTransport> glossy_;  // where the scene has glossy surfaces
+    std::vector<float> lightSpread_;         // its spread over the element (W/m^2)
     std::vector<std::array<Color, 2>> radiosity_;
     std::vector<std::vector<Link>> links_;
     ClusterHierarchy clusters_;

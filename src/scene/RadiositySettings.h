@@ -22,6 +22,9 @@ struct RadiositySettings {
     // Hierarchical: the patches grouped into clusters, the solve starting from the top cluster's
     // link to itself instead of linking every pair of patches.
     bool clusters = false;
+    // Hierarchical: rays per leaf and per vertex estimating the light that reaches them through a
+    // glossy reflection (in scenes with glossy surfaces; 0: none).
+    int glossySamples = 64;
     // The render, not the solution: rays gathering the solution at each eye ray's diffuse hit
     // (0: the solution interpolated there).
     int finalGather = 0;

@@ -28,11 +28,13 @@ const Material* Scene::addMaterial(std::unique_ptr<Material> material) {
 }
 
 void Scene::addShape(std::unique_ptr<Shape> shape) {
-    for (std::uint32_t i = 0;
-         i < shape->primitiveCount() && !(hasTransmissiveMaterial_ && hasCutOuts_); ++i) {
+    for (std::uint32_t i = 0; i < shape->primitiveCount() &&
+                              !(hasTransmissiveMaterial_ && hasCutOuts_ && hasGlossyMaterial_);
+         ++i) {
         if (const Material* material = shape->primitiveMaterial(i)) {
             hasTransmissiveMaterial_ = hasTransmissiveMaterial_ || material->isTransmissive();
             hasCutOuts_ = hasCutOuts_ || material->hasCutOuts();
+            hasGlossyMaterial_ = hasGlossyMaterial_ || material->reflectsGlossily();
         }
     }
     (shape->isBounded() ? boundedShapes_ : unboundedShapes_).push_back(std::move(shape));

@@ -99,6 +99,8 @@ public:
     bool hasTransmissiveMaterial() const { return hasTransmissiveMaterial_; }
     // Whether some surface has alpha cut-outs (intersect then looks past the points cut away).
     bool hasCutOuts() const { return hasCutOuts_; }
+    // Whether some surface reflects glossily (Material::reflectsGlossily).
+    bool hasGlossyMaterial() const { return hasGlossyMaterial_; }
 
 private:
     RenderSettings settings_;
@@ -112,6 +114,7 @@ private:
     std::unique_ptr<WideBvh> bvh_;  // over the bounded shapes
     bool hasTransmissiveMaterial_ = false;
     bool hasCutOuts_ = false;
+    bool hasGlossyMaterial_ = false;
     Statistics statistics_;
     std::vector<std::filesystem::path> sourceFiles_;
     std::vector<std::unique_ptr<Light>> lights_;

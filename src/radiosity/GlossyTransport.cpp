@@ -1,0 +1,100 @@
+#include "radiosity/GlossyTransport.h"
+
+#include "geometry/Hit.h"
+#include "geometry/Shape.h"
+#include "lights/Light.h"
+#include "materials/Bsdf.h"
+#include "materials/Material.h"
+#include "radiosity/RadiositySolution.h"
+#include "sampling/Sampling.h"
+#include "sampling/StratifiedPoint.h"
+#include "scene/Scene.h"
+#include "scene/ShadowRays.h"
+
+namespace lancer {
+
+namespace {
+
+// A number in [0, 1) from a hash.
+float unit(std::uint64_t hash) {
+    return static_cast<float>(hash >> 40) * 0x1p-24f;
+}
+
+}  // namespace
+
+GlossyTransport::GlossyTransport(const Scene& scene, int samples)
+    : scene_(scene), emitters_(scene), samples_(samples) {
+    const Bounds3 bounds = scene.bounds();
+    offset_ = bounds.isEmpty() ? 1e-4f : 1e-5f * length(bounds.diagonal());
+}
+
+std::array<Color, 2> GlossyTransport::at(const Element& element, const std::array<bool, 2>& wanted,
+                                         const RadiositySolution& solution, std::uint64_t seed,
+                                         std::uint64_t& rayCount) const {
+    std::array<Color, 2> E;
+    for (Side side : kBothSides) {
+        if (!wanted[sideIndex(side)]) continue;
+        const Vec3 n = side == Side::Front ? element.surfaceNormal : -element.surfaceNormal;
+        Vec3 a, b;
+        coordinateSystem(n, a, b);
+        const std::uint64_t sideSeed = hashValues(seed, sideIndex(side));
+        Color sum;
+        for (int k = 0; k < samples_; ++k) {
+            const Vec3 local = sampleCosineHemisphere(stratifiedPoint(k, samples_, sideSeed));
+            const Vec3 direction = local.x * a + local.y * b + local.z * n;
+            ++rayCount;
+            sum += glossyRadiance({element.surfacePoint + offset_ * n, direction}, solution,
+                                  hashValues(sideSeed, k), rayCount);
+        }
+        // Cosine-distributed directions: E = pi x the mean radiance.
+        E[sideIndex(side)] = sum * (kPi / static_cast<float>(samples_));
+    }
+    return E;
+}
+
+Color GlossyTransport::glossyRadiance(const Ray& ray, const RadiositySolution& solution,
+                                      std::uint64_t seed, std::uint64_t& rayCount) const {
+    const std::optional<Hit> found = scene_.intersect(ray, kInfinity);
+    if (!found || !found->material->reflectsGlossily()) return Color(0);
+    const Hit& hit = *found;
+    const Vec3 wo = -ray.direction;
+    const Bsdf bsdf(*hit.material, hit, wo, Bsdf::Weights::EnergyConserving);
+    if (bsdf.glossyLobeCount() == 0) return Color(0);
+    const Vec3 n = bsdf.shadingNormal(hit.frontFace(ray));
+    Color L;
+    if (const auto choice = emitters_.choose(unit(hashValues(seed, 1)))) {
+        const LightSample ls = choice->light->sample(
+            hit.p, Vec2(unit(hashValues(seed, 2)), unit(hashValues(seed, 3))));
+        const float cosTheta = dot(n, ls.wi);
+        if (cosTheta > 0 && !ls.irradiance.isBlack() && ls.irradiance.isFinite()) {
+            const Color f = bsdf.glossyF(wo, ls.wi, choice->light->isDelta());
+            if (!f.isBlack())
+                L += f * cosTheta * ls.irradiance *
+                     ShadowRays::transmittance(scene_, hit, ls, rayCount) / choice->probability;
+        }
+    }
+    for (std::size_t lobe = 0; lobe < bsdf.glossyLobeCount(); ++lobe) {
+        const Vec2 u(unit(hashValues(seed, 4, lobe)), unit(hashValues(seed, 5, lobe)));
+        const std::optional<SpecularRay> r = bsdf.glossyRay(lobe, wo, u);
+        if (!r) continue;
+        ++rayCount;
+        const Ray next = hit.spawnRay(r->direction);
+        const std::optional<Hit> seen = scene_.intersect(next, kInfinity);
+        if (!seen) continue;
+        Color there;
+        // The emitters the samples reach are left to them.
+        if (!emitters_.lightAt(*seen) && (seen->frontFace(next) || seen->shape->emitsOnBothSides()))
+            there += seen->material->emission(*seen);
+        const Bsdf seenBsdf(*seen->material, *seen, -next.direction,
+                            Bsdf::Weights::EnergyConserving);
+        const Color kd = seenBsdf.diffuseReflectance();
+        if (!kd.isBlack())
+            if (const std::optional<Color> E =
+                    solution.irradiance(seen->p, seen->ng, -next.direction))
+                there += kd * *E / kPi;
+        L += r->weight * there;
+    }
+    return L;
+}
+
+}  // namespace lancer
