@@ -30,6 +30,9 @@ constexpr double kMostTaken = 1.1;
 // Stratified samples per area light when lighting elements (more if the light asks for more).
 constexpr int kAreaLightSamples = 16;
 
+// Rounds of light through glossy reflections, each from the solution the one before left.
+constexpr int kGlossyRounds = 2;
+
 }  // namespace
 
 ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene)
@@ -38,7 +41,10 @@ ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene)
     patchSize_ = mesher.patchSize();
     mesh_ = mesher.mesh();
 
-    fingerprint_ = mesh_.fingerprint(scene, settings_);
+    const bool glossy = scene.hasGlossyMaterial() && settings_.glossySamples > 0;
+    fingerprint_ =
+        hashValues(mesh_.fingerprint(scene, settings_), glossy ? settings_.glossySamples : 0);
+    if (glossy) glossy_.emplace(scene, settings_.glossySamples);
 }
 
 std::array<Color, 2> ProgressiveRadiosity::lightIrradiance(const Element& e, std::uint64_t key,
@@ -178,7 +184,7 @@ std::size_t ProgressiveRadiosity::subdivide(int level) {
             brightest = std::max(brightest, c.average());
     // Differences among the darkest elements do not show.
     const float floor = 1e-3f * brightest;
-    std::vector<std::uint32_t> children;
+    std::vector<std::uint32_t> children, parentOf;
     for (std::size_t i = 0; i < leaves.size(); ++i) {
         const Element& e = mesh_.elements[leaves[i]];
         if (e.level != level) continue;
@@ -194,8 +200,10 @@ std::size_t ProgressiveRadiosity::subdivide(int level) {
             }
         if (!jumps) continue;
         const std::uint32_t first = mesh_.split(leaves[i]);
-        for (std::uint32_t c = first; c < first + 4; ++c)
+        for (std::uint32_t c = first; c < first + 4; ++c) {
             children.push_back(c);
+            parentOf.push_back(leaves[i]);
+        }
     }
     for (std::uint32_t c : children) {
         Element& child = mesh_.elements[c];
@@ -206,48 +214,45 @@ std::size_t ProgressiveRadiosity::subdivide(int level) {
         parallelForCounting(children.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
             E[i] = gather(mesh_.elements[children[i]], children[i], rays).total;
         });
-    for (std::size_t i = 0; i < children.size(); ++i)
+    // The light through glossy reflections is not gathered again: the children take their
+    // parent's (the vertices gather it at the end).
+    fromGlossy_.resize(mesh_.elements.size());
+    for (std::size_t i = 0; i < children.size(); ++i) {
+        fromGlossy_[children[i]] = fromGlossy_[parentOf[i]];
+        for (std::size_t side = 0; side < 2; ++side)
+            E[i][side] += fromGlossy_[children[i]][side];
         mesh_.elements[children[i]].irradiance = E[i];
+    }
     return children.size() / 4;
 }
 
 void ProgressiveRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
     const auto key = static_cast<std::uint64_t>(mesh_.elements.size());
-    rays_ += parallelForCounting(
-        smoothing.vertexIrradiance.size(), 16, cancel_, [&](std::size_t v, std::uint64_t& rays) {
-            const SplitIrradiance E = gather(smoothing.gatherSite(scene_, v, rays), key + v, rays);
-            smoothing.vertexIrradiance[v] = E.total;
-            smoothing.vertexDirect[v] = E.direct;
-        });
+    const std::optional<RadiositySolution> current =
+        glossy_ ? std::optional<RadiositySolution>(snapshot()) : std::nullopt;
+    rays_ += parallelForCounting(smoothing.vertexIrradiance.size(), 16, cancel_,
+                                 [&](std::size_t v, std::uint64_t& rays) {
+                                     const Element site = smoothing.gatherSite(scene_, v, rays);
+                                     SplitIrradiance E = gather(site, key + v, rays);
+                                     if (glossy_) {
+                                         const bool reflects = site.reflectance.maxComponent() > 0;
+                                         E += {glossy_->at(site, {reflects, reflects}, *current,
+                                                           hashValues(v, 0x76u, 0x6c6fu), rays),
+                                               {}};
+                                     }
+                                     smoothing.vertexIrradiance[v] = E.total;
+                                     smoothing.vertexDirect[v] = E.direct;
+                                 });
 }
 
 RadiositySolution ProgressiveRadiosity::solve() {
     return *solve({}, nullptr);
 }
 
-std::optional<RadiositySolution> ProgressiveRadiosity::solve(
-    const std::function<void(const RadiosityProgress&)>& onProgress,
-    const std::atomic<bool>* cancel) {
-    cancel_ = cancel;
-    const RadiosityReporter reporter(onProgress, cancel);
-    const auto carryOn = [&](RadiosityProgress::Phase phase) {
-        return reporter.carryOn(phase, shots_, unshotHistory_.back(), initialPower_);
-    };
-
-    for (Patch& p : mesh_.patches)
-        for (std::size_t side = 0; side < 2; ++side) {
-            p.unshot[side] = kPi * p.emission[side];  // B = pi L for a Lambertian emitter
-            for (std::uint32_t k = p.firstElement; k < p.firstElement + p.elementCount; ++k)
-                mesh_.elements[k].unshot[side] = p.unshot[side];
-        }
-    lightElements();
-
-    const std::vector<std::uint32_t> receivers = mesh_.leaves();
-    const double initial = mesh_.unshotPower().average();
-    initialPower_ = initial;
-    unshotHistory_ = {initial};
-    shots_ = 0;
-    if (!carryOn(RadiosityProgress::Phase::Shooting)) return std::nullopt;
+bool ProgressiveRadiosity::shootUntilConverged(
+    const std::vector<std::uint32_t>& receivers,
+    const std::function<bool(RadiosityProgress::Phase)>& carryOn) {
+    const double initial = initialPower_;
     while (initial > 0 && unshotHistory_.back() > settings_.threshold * initial &&
            shots_ < static_cast<std::uint64_t>(settings_.maxShots)) {
         std::uint32_t best = 0;
@@ -269,8 +274,70 @@ std::optional<RadiositySolution> ProgressiveRadiosity::solve(
         shoot(best, bestSide, strong ? settings_.visibilityRays : 1, receivers);
         ++shots_;
         unshotHistory_.push_back(mesh_.unshotPower().average());
-        if (!carryOn(RadiosityProgress::Phase::Shooting)) return std::nullopt;
+        if (!carryOn(RadiosityProgress::Phase::Shooting)) return false;
     }
+
+    return true;
+}
+
+void ProgressiveRadiosity::gatherThroughGlossy(const std::vector<std::uint32_t>& receivers,
+                                               int round) {
+    const RadiositySolution current = snapshot();
+    std::vector<std::array<Color, 2>> E(receivers.size());
+    rays_ +=
+        parallelForCounting(receivers.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
+            const Element& e = mesh_.elements[receivers[i]];
+            const bool reflects = e.reflectance.maxComponent() > 0;
+            E[i] = glossy_->at(e, {reflects, reflects}, current,
+                               hashValues(receivers[i], round, 0x6c6fu), rays);
+        });
+    // What is new since the last round is received, and reflected as unshot radiosity.
+    for (std::size_t i = 0; i < receivers.size(); ++i) {
+        Element& e = mesh_.elements[receivers[i]];
+        Patch& patch = mesh_.patches[e.patch];
+        for (std::size_t side = 0; side < 2; ++side) {
+            const Color added = E[i][side] - fromGlossy_[receivers[i]][side];
+            fromGlossy_[receivers[i]][side] = E[i][side];
+            e.irradiance[side] += added;
+            e.unshot[side] += e.reflectance * added;
+            patch.unshot[side] += e.reflectance * added * (e.area / patch.area);
+        }
+    }
+    unshotHistory_.push_back(mesh_.unshotPower().average());
+}
+
+std::optional<RadiositySolution> ProgressiveRadiosity::solve(
+    const std::function<void(const RadiosityProgress&)>& onProgress,
+    const std::atomic<bool>* cancel) {
+    cancel_ = cancel;
+    const RadiosityReporter reporter(onProgress, cancel);
+    const auto carryOn = [&](RadiosityProgress::Phase phase) {
+        return reporter.carryOn(phase, shots_, unshotHistory_.back(), initialPower_);
+    };
+
+    for (Patch& p : mesh_.patches)
+        for (std::size_t side = 0; side < 2; ++side) {
+            p.unshot[side] = kPi * p.emission[side];  // B = pi L for a Lambertian emitter
+            for (std::uint32_t k = p.firstElement; k < p.firstElement + p.elementCount; ++k)
+                mesh_.elements[k].unshot[side] = p.unshot[side];
+        }
+    lightElements();
+    fromGlossy_.assign(mesh_.elements.size(), {});
+
+    const std::vector<std::uint32_t> receivers = mesh_.leaves();
+    const double initial = mesh_.unshotPower().average();
+    initialPower_ = initial;
+    unshotHistory_ = {initial};
+    shots_ = 0;
+    if (!carryOn(RadiosityProgress::Phase::Shooting)) return std::nullopt;
+    if (!shootUntilConverged(receivers, carryOn)) return std::nullopt;
+    // The light through glossy reflections, from the solution as it stands, shot on with the
+    // rest; twice, so that it is itself reflected by the glossy surfaces.
+    if (glossy_)
+        for (int round = 0; round < kGlossyRounds; ++round) {
+            gatherThroughGlossy(receivers, round);
+            if (cancelled() || !shootUntilConverged(receivers, carryOn)) return std::nullopt;
+        }
 
     for (int level = 0; level < settings_.subdivisionLevels; ++level) {
         if (!carryOn(RadiosityProgress::Phase::Subdividing)) return std::nullopt;

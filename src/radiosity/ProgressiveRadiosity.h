@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "radiosity/FormFactor.h"
+#include "radiosity/GlossyTransport.h"
 #include "radiosity/RadiosityMesh.h"
 #include "radiosity/RadiosityMethod.h"
 #include "radiosity/RadiosityProgress.h"
@@ -62,6 +63,13 @@ public:
 
 private:
     void lightElements();
+    // Shoots until the unshot power is below the threshold (or the shots run out); false once
+    // cancelled.
+    bool shootUntilConverged(const std::vector<std::uint32_t>& receivers,
+                             const std::function<bool(RadiosityProgress::Phase)>& carryOn);
+    // Adds to the receivers the light through glossy reflections (GlossyTransport) that the
+    // solution as it stands gives beyond the last round's, and makes it unshot radiosity.
+    void gatherThroughGlossy(const std::vector<std::uint32_t>& receivers, int round);
     // Shoots a patch side's unshot radiosity to the receivers, with `rays` rays per receiver
     // (shared among the patch's elements).
     void shoot(std::uint32_t patch, Side side, int rays,
@@ -87,6 +95,9 @@ private:
     FormFactor formFactor_;
     std::uint64_t fingerprint_ = 0;
     std::vector<double> unshotHistory_;
+    std::optional<GlossyTransport> glossy_;  // where the scene has glossy surfaces
+    // Per element, the irradiance through glossy reflections received so far.
+    std::vector<std::array<Color, 2>> fromGlossy_;
     double initialPower_ = 0;  // the unshot power before the first shot
     std::uint64_t rays_ = 0;
     std::uint64_t shots_ = 0;
