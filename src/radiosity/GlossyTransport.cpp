@@ -22,15 +22,14 @@ float unit(std::uint64_t hash) {
 
 }  // namespace
 
-GlossyTransport::GlossyTransport(const Scene& scene, int samples)
-    : scene_(scene), emitters_(scene), samples_(samples) {
+GlossyTransport::GlossyTransport(const Scene& scene) : scene_(scene), emitters_(scene) {
     const Bounds3 bounds = scene.bounds();
     offset_ = bounds.isEmpty() ? 1e-4f : 1e-5f * length(bounds.diagonal());
 }
 
 std::array<Color, 2> GlossyTransport::at(const Element& element, const std::array<bool, 2>& wanted,
-                                         const RadiositySolution& solution, std::uint64_t seed,
-                                         std::uint64_t& rayCount) const {
+                                         const RadiositySolution& solution, int samples,
+                                         std::uint64_t seed, std::uint64_t& rayCount) const {
     std::array<Color, 2> E;
     for (Side side : kBothSides) {
         if (!wanted[sideIndex(side)]) continue;
@@ -39,15 +38,15 @@ std::array<Color, 2> GlossyTransport::at(const Element& element, const std::arra
         coordinateSystem(n, a, b);
         const std::uint64_t sideSeed = hashValues(seed, sideIndex(side));
         Color sum;
-        for (int k = 0; k < samples_; ++k) {
-            const Vec3 local = sampleCosineHemisphere(stratifiedPoint(k, samples_, sideSeed));
+        for (int k = 0; k < samples; ++k) {
+            const Vec3 local = sampleCosineHemisphere(stratifiedPoint(k, samples, sideSeed));
             const Vec3 direction = local.x * a + local.y * b + local.z * n;
             ++rayCount;
             sum += glossyRadiance({element.surfacePoint + offset_ * n, direction}, solution,
                                   hashValues(sideSeed, k), rayCount);
         }
         // Cosine-distributed directions: E = pi x the mean radiance.
-        E[sideIndex(side)] = sum * (kPi / static_cast<float>(samples_));
+        E[sideIndex(side)] = sum * (kPi / static_cast<float>(samples));
     }
     return E;
 }

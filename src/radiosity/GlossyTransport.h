@@ -16,7 +16,7 @@ class Scene;
 
 // The light that reaches a diffuse surface through one glossy reflection (the `specular`
 // Blinn-Phong lobe): what a solution of diffuse transport alone leaves out (a glossy floor sends
-// a lamp's light up to the ceiling). Estimated at a point by `samples` cosine-distributed rays;
+// a lamp's light up to the ceiling). Estimated at a point by cosine-distributed rays;
 // where one meets a glossy surface, that surface's reflection towards the point is estimated as
 // the radiosity integrator's gather does: one sample of the emitters (picked as the path tracer
 // picks them) through the lobe's f, with a shadow ray, and one direction drawn from each glossy
@@ -24,13 +24,13 @@ class Scene;
 // irradiance) and the emission of an emitter the samples do not reach (an emissive plane).
 class GlossyTransport {
 public:
-    GlossyTransport(const Scene& scene, int samples);
+    explicit GlossyTransport(const Scene& scene);
 
     // The irradiance on each side of the element at its surface point (none on a side `wanted`
     // leaves out), from `solution`'s diffuse light and the emitters, through one glossy
-    // reflection. `seed` places the samples; rayCount grows by the rays traced.
+    // reflection, from `samples` rays. `seed` places them; rayCount grows by the rays traced.
     std::array<Color, 2> at(const Element& element, const std::array<bool, 2>& wanted,
-                            const RadiositySolution& solution, std::uint64_t seed,
+                            const RadiositySolution& solution, int samples, std::uint64_t seed,
                             std::uint64_t& rayCount) const;
 
 private:
@@ -41,7 +41,6 @@ private:
 
     const Scene& scene_;
     LightSampler emitters_;
-    int samples_;
     float offset_;  // how far rays start off the element's surface point
 };
 

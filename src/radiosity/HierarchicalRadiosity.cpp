@@ -79,6 +79,8 @@ constexpr int kMaxRefinementPasses = 3;
 constexpr std::size_t kFewCandidates = 1000;
 // Rounds of light through glossy reflections, each from the solution the one before left.
 constexpr int kGlossyRounds = 2;
+// The vertices, which the image shows, estimate it with this many times the samples.
+constexpr int kVertexGlossyFactor = 4;
 
 float longestEdge(const std::array<Vec3, 3>& t) {
     return std::max({length(t[1] - t[0]), length(t[2] - t[1]), length(t[0] - t[2])});
@@ -124,8 +126,7 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene)
         hashValues(mesh_.fingerprint(scene, settings_), 0x4852u,  // "HR"
                    std::bit_cast<std::uint32_t>(settings_.refinementTolerance), settings_.clusters),
         scene.hasGlossyMaterial() ? settings_.glossySamples : 0);
-    if (scene.hasGlossyMaterial() && settings_.glossySamples > 0)
-        glossy_.emplace(scene, settings_.glossySamples);
+    if (scene.hasGlossyMaterial() && settings_.glossySamples > 0) glossy_.emplace(scene);
     for (const Patch& p : mesh_.patches)
         for (std::uint32_t e = p.firstElement; e < p.firstElement + p.elementCount; ++e)
             roots_.push_back(e);
@@ -884,8 +885,9 @@ void HierarchicalRadiosity::gatherThroughGlossy(int round) {
         parallelForCounting(leaves.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
             const Element& e = mesh_.elements[leaves[i]];
             const bool reflects = e.reflectance.maxComponent() > 0;
-            fromGlossy_[leaves[i]] = glossy_->at(e, {reflects, reflects}, current,
-                                                 hashValues(leaves[i], round, 0x6c6fu), rays);
+            fromGlossy_[leaves[i]] =
+                glossy_->at(e, {reflects, reflects}, current, settings_.glossySamples,
+                            hashValues(leaves[i], round, 0x6c6fu), rays);
         });
 }
 
@@ -917,8 +919,9 @@ void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
         SplitIrradiance E;
         if (glossy_) {
             const bool reflects = at.reflectance.maxComponent() > 0;
-            E.total = glossy_->at(at, {reflects, reflects}, *current, hashValues(v, 0x76u, 0x6c6fu),
-                                  rays);
+            E.total = glossy_->at(at, {reflects, reflects}, *current,
+                                  kVertexGlossyFactor * settings_.glossySamples,
+                                  hashValues(v, 0x76u, 0x6c6fu), rays);
         }
         if (!scene_.lights().empty())
             for (Side side : kBothSides)

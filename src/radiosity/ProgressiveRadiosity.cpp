@@ -32,6 +32,8 @@ constexpr int kAreaLightSamples = 16;
 
 // Rounds of light through glossy reflections, each from the solution the one before left.
 constexpr int kGlossyRounds = 2;
+// The vertices, which the image shows, estimate it with this many times the samples.
+constexpr int kVertexGlossyFactor = 4;
 
 }  // namespace
 
@@ -44,7 +46,7 @@ ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene)
     const bool glossy = scene.hasGlossyMaterial() && settings_.glossySamples > 0;
     fingerprint_ =
         hashValues(mesh_.fingerprint(scene, settings_), glossy ? settings_.glossySamples : 0);
-    if (glossy) glossy_.emplace(scene, settings_.glossySamples);
+    if (glossy) glossy_.emplace(scene);
 }
 
 std::array<Color, 2> ProgressiveRadiosity::lightIrradiance(const Element& e, std::uint64_t key,
@@ -230,19 +232,20 @@ void ProgressiveRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
     const auto key = static_cast<std::uint64_t>(mesh_.elements.size());
     const std::optional<RadiositySolution> current =
         glossy_ ? std::optional<RadiositySolution>(snapshot()) : std::nullopt;
-    rays_ += parallelForCounting(smoothing.vertexIrradiance.size(), 16, cancel_,
-                                 [&](std::size_t v, std::uint64_t& rays) {
-                                     const Element site = smoothing.gatherSite(scene_, v, rays);
-                                     SplitIrradiance E = gather(site, key + v, rays);
-                                     if (glossy_) {
-                                         const bool reflects = site.reflectance.maxComponent() > 0;
-                                         E += {glossy_->at(site, {reflects, reflects}, *current,
-                                                           hashValues(v, 0x76u, 0x6c6fu), rays),
-                                               {}};
-                                     }
-                                     smoothing.vertexIrradiance[v] = E.total;
-                                     smoothing.vertexDirect[v] = E.direct;
-                                 });
+    rays_ += parallelForCounting(
+        smoothing.vertexIrradiance.size(), 16, cancel_, [&](std::size_t v, std::uint64_t& rays) {
+            const Element site = smoothing.gatherSite(scene_, v, rays);
+            SplitIrradiance E = gather(site, key + v, rays);
+            if (glossy_) {
+                const bool reflects = site.reflectance.maxComponent() > 0;
+                E += {glossy_->at(site, {reflects, reflects}, *current,
+                                  kVertexGlossyFactor * settings_.glossySamples,
+                                  hashValues(v, 0x76u, 0x6c6fu), rays),
+                      {}};
+            }
+            smoothing.vertexIrradiance[v] = E.total;
+            smoothing.vertexDirect[v] = E.direct;
+        });
 }
 
 RadiositySolution ProgressiveRadiosity::solve() {
@@ -288,7 +291,7 @@ void ProgressiveRadiosity::gatherThroughGlossy(const std::vector<std::uint32_t>&
         parallelForCounting(receivers.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
             const Element& e = mesh_.elements[receivers[i]];
             const bool reflects = e.reflectance.maxComponent() > 0;
-            E[i] = glossy_->at(e, {reflects, reflects}, current,
+            E[i] = glossy_->at(e, {reflects, reflects}, current, settings_.glossySamples,
                                hashValues(receivers[i], round, 0x6c6fu), rays);
         });
     // What is new since the last round is received, and reflected as unshot radiosity.
