@@ -8,22 +8,11 @@
 #include "materials/Bsdf.h"
 #include "materials/Material.h"
 #include "sampling/Sampler.h"
+#include "sampling/Sampling.h"
 #include "scene/Scene.h"
 #include "scene/ShadowRays.h"
 
 namespace lancer {
-
-namespace {
-
-// The power heuristic with beta = 2 (Veach 1997): the weight of a sample drawn with density a
-// when b is the other strategy's density for it.
-float powerHeuristic(float a, float b) {
-    if (std::isinf(a)) return 1;
-    const float a2 = a * a, b2 = b * b;
-    return a2 + b2 > 0 ? a2 / (a2 + b2) : 0;
-}
-
-}  // namespace
 
 PathIntegrator::PathIntegrator(const Scene& scene, int maxDepth)
     : scene_(scene), maxDepth_(maxDepth), lights_(scene) {}

@@ -158,6 +158,11 @@ std::size_t Bsdf::specularRays(const Vec3& wo, bool front,
     return count - 1;
 }
 
+Bsdf::LobeValue Bsdf::glossyLobeValue(std::size_t index, const Vec3& wo, const Vec3& wi) const {
+    const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
+    return {glossyLobes_[index]->f(woLocal, wiLocal), glossyLobes_[index]->pdf(woLocal, wiLocal)};
+}
+
 Color Bsdf::glossyF(const Vec3& wo, const Vec3& wi, bool deltaLight) const {
     const Vec3 woLocal = frame_.toLocal(wo), wiLocal = frame_.toLocal(wi);
     Color sum;

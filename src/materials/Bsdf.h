@@ -96,6 +96,13 @@ public:
     // the weight f cos / pdf of its radiance; none where the lobe gives nothing or the direction
     // would cross the geometric surface the wrong way.
     std::optional<SpecularRay> glossyRay(std::size_t index, const Vec3& wo, const Vec2& u) const;
+    // The glossy lobe `index`'s f and density for the pair (no geometric cut, as glossyF): what
+    // multiple importance sampling weighs a light's sample against the lobe's own with.
+    struct LobeValue {
+        Color f;
+        float pdf = 0;
+    };
+    LobeValue glossyLobeValue(std::size_t index, const Vec3& wo, const Vec3& wi) const;
     // The albedo of the ideal diffuse lobes (f = albedo / pi), which radiosity handles.
     const Color& diffuseReflectance() const { return diffuseWeight_; }
     // Whether some lobe is neither diffuse nor delta (highlights).

@@ -61,12 +61,24 @@ Color GlossyTransport::glossyRadiance(const Ray& ray, const RadiositySolution& s
     if (bsdf.glossyLobeCount() == 0) return Color(0);
     const Vec3 n = bsdf.shadingNormal(hit.frontFace(ray));
     Color L;
+    // An emitter sample, weighed against the lobes' own samples, which find the same emitters
+    // (multiple importance sampling: a sharp lobe's samples find a lamp that its f would make a
+    // rare and very bright light sample).
     if (const auto choice = emitters_.choose(unit(hashValues(seed, 1)))) {
-        const LightSample ls = choice->light->sample(
-            hit.p, Vec2(unit(hashValues(seed, 2)), unit(hashValues(seed, 3))));
+        const Light& light = *choice->light;
+        const LightSample ls =
+            light.sample(hit.p, Vec2(unit(hashValues(seed, 2)), unit(hashValues(seed, 3))));
         const float cosTheta = dot(n, ls.wi);
-        if (cosTheta > 0 && !ls.irradiance.isBlack() && ls.irradiance.isFinite()) {
-            const Color f = bsdf.glossyF(wo, ls.wi, choice->light->isDelta());
+        if (cosTheta > 0 && !ls.irradiance.isBlack() && ls.irradiance.isFinite() &&
+            (light.isDelta() || ls.pdf > 0)) {
+            Color f;
+            if (light.isDelta())
+                f = bsdf.glossyF(wo, ls.wi, true);
+            else
+                for (std::size_t lobe = 0; lobe < bsdf.glossyLobeCount(); ++lobe) {
+                    const Bsdf::LobeValue v = bsdf.glossyLobeValue(lobe, wo, ls.wi);
+                    f += v.f * powerHeuristic(choice->probability * ls.pdf, v.pdf);
+                }
             if (!f.isBlack())
                 L += f * cosTheta * ls.irradiance *
                      ShadowRays::transmittance(scene_, hit, ls, rayCount) / choice->probability;
@@ -81,9 +93,14 @@ Color GlossyTransport::glossyRadiance(const Ray& ray, const RadiositySolution& s
         const std::optional<Hit> seen = scene_.intersect(next, kInfinity);
         if (!seen) continue;
         Color there;
-        // The emitters the samples reach are left to them.
-        if (!emitters_.lightAt(*seen) && (seen->frontFace(next) || seen->shape->emitsOnBothSides()))
-            there += seen->material->emission(*seen);
+        if (seen->frontFace(next) || seen->shape->emitsOnBothSides()) {
+            float weight = 1;
+            if (const Light* light = emitters_.lightAt(*seen))
+                weight = powerHeuristic(
+                    bsdf.glossyLobeValue(lobe, wo, r->direction).pdf,
+                    emitters_.probability(light) * light->pdf(hit.p, r->direction, *seen));
+            there += seen->material->emission(*seen) * weight;
+        }
         const Bsdf seenBsdf(*seen->material, *seen, -next.direction,
                             Bsdf::Weights::EnergyConserving);
         const Color kd = seenBsdf.diffuseReflectance();

@@ -16,12 +16,13 @@ class Scene;
 
 // The light that reaches a diffuse surface through one glossy reflection (the `specular`
 // Blinn-Phong lobe): what a solution of diffuse transport alone leaves out (a glossy floor sends
-// a lamp's light up to the ceiling). Estimated at a point by cosine-distributed rays;
-// where one meets a glossy surface, that surface's reflection towards the point is estimated as
-// the radiosity integrator's gather does: one sample of the emitters (picked as the path tracer
-// picks them) through the lobe's f, with a shadow ray, and one direction drawn from each glossy
-// lobe, which finds the diffuse light of the surface it meets in a solution (kd / pi times its
-// irradiance) and the emission of an emitter the samples do not reach (an emissive plane).
+// a lamp's light up to the ceiling). Estimated at a point by cosine-distributed rays; where one
+// meets a glossy surface, that surface's reflection towards the point is estimated from one
+// sample of the emitters (picked as the path tracer picks them) through the lobe's f, with a
+// shadow ray, and one direction drawn from each glossy lobe, which finds the diffuse light of the
+// surface it meets in a solution (kd / pi times its irradiance) and the emitters' light: the two
+// techniques weighed by the power heuristic where both find an emitter, so that a sharp lobe's
+// rare, very bright emitter samples do not show as blotches.
 class GlossyTransport {
 public:
     explicit GlossyTransport(const Scene& scene);

@@ -32,6 +32,14 @@ inline Vec3 sampleCosineHemisphere(const Vec2& u) {
     return {d.x, d.y, std::sqrt(std::max(0.0f, 1 - d.x * d.x - d.y * d.y))};
 }
 
+// The power heuristic with beta = 2 (Veach 1997): the weight of a sample drawn with density a
+// when b is the other strategy's density for it (1 for a delta strategy's, of infinite density).
+inline float powerHeuristic(float a, float b) {
+    if (std::isinf(a)) return 1;
+    const float a2 = a * a, b2 = b * b;
+    return a2 + b2 > 0 ? a2 / (a2 + b2) : 0;
+}
+
 // A 64-bit hash of several integers (the SplitMix64 finaliser, chained): turns (seed, pixel,
 // dimension) into independent-looking seeds.
 inline std::uint64_t mixBits(std::uint64_t v) {
