@@ -753,26 +753,17 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
     if (node.has("refinement_tolerance"))
         r.refinementTolerance = readNumberAtLeast(node["refinement_tolerance"], 0, false);
     if (node.has("clusters")) r.clusters = readFlag(node["clusters"]);
-    if (node.has("visibility_rays")) {
-        r.visibilityRays = readInt(node["visibility_rays"], 1);
-        if (r.visibilityRays > 1024)
-            fail(node["visibility_rays"], "\"visibility_rays\" must be at most 1024");
-    }
-    if (node.has("final_gather")) {
-        r.finalGather = readInt(node["final_gather"], 0);
-        if (r.finalGather > 4096)
-            fail(node["final_gather"], "\"final_gather\" must be at most 4096");
-    }
-    if (node.has("glossy_samples")) {
-        r.glossySamples = readInt(node["glossy_samples"], 0);
-        if (r.glossySamples > 4096)
-            fail(node["glossy_samples"], "\"glossy_samples\" must be at most 4096");
-    }
-    if (node.has("direct_samples")) {
-        r.directSamples = readInt(node["direct_samples"], 0);
-        if (r.directSamples > 4096)
-            fail(node["direct_samples"], "\"direct_samples\" must be at most 4096");
-    }
+    // A count of rays or samples between `least` and `most`.
+    const auto readCount = [&](const char* key, int least, int most, int& into) {
+        if (!node.has(key)) return;
+        into = readInt(node[key], least);
+        if (into > most)
+            fail(node[key], "\"" + std::string(key) + "\" must be at most " + std::to_string(most));
+    };
+    readCount("visibility_rays", 1, 1024, r.visibilityRays);
+    readCount("final_gather", 0, 4096, r.finalGather);
+    readCount("glossy_samples", 0, 4096, r.glossySamples);
+    readCount("direct_samples", 0, 4096, r.directSamples);
 }
 
 void SceneLoader::Reader::loadCamera(const Node& node) {
