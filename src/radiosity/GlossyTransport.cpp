@@ -10,6 +10,7 @@
 #include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
 #include "scene/ShadowRays.h"
+#include "util/ParallelFor.h"
 
 namespace lancer {
 
@@ -20,19 +21,43 @@ float unit(std::uint64_t hash) {
     return static_cast<float>(hash >> 40) * 0x1p-24f;
 }
 
+// The vertices' samples, per element sample.
+constexpr int kVertexSamplesFactor = 4;
+
 }  // namespace
 
-GlossyTransport::GlossyTransport(const Scene& scene) : scene_(scene), emitters_(scene) {
+GlossyTransport::GlossyTransport(const Scene& scene, int samples)
+    : scene_(scene), emitters_(scene), samples_(samples) {
     const Bounds3 bounds = scene.bounds();
     offset_ = bounds.isEmpty() ? 1e-4f : 1e-5f * length(bounds.diagonal());
 }
 
-std::array<Color, 2> GlossyTransport::at(const Element& element, const std::array<bool, 2>& wanted,
-                                         const RadiositySolution& solution, int samples,
-                                         std::uint64_t seed, std::uint64_t& rayCount) const {
+std::vector<std::array<Color, 2>> GlossyTransport::atElements(
+    const RadiosityMesh& mesh, const std::vector<std::uint32_t>& elements,
+    const RadiositySolution& solution, int round, const std::atomic<bool>* cancel,
+    std::uint64_t& rayCount) const {
+    std::vector<std::array<Color, 2>> E(elements.size());
+    rayCount +=
+        parallelForCounting(elements.size(), 16, cancel, [&](std::size_t i, std::uint64_t& rays) {
+            E[i] = at(mesh.elements[elements[i]], solution, samples_,
+                      hashValues(elements[i], round, 0x6c6fu), rays);
+        });
+    return E;
+}
+
+std::array<Color, 2> GlossyTransport::atVertex(const Element& site, std::size_t vertex,
+                                               const RadiositySolution& solution,
+                                               std::uint64_t& rayCount) const {
+    return at(site, solution, kVertexSamplesFactor * samples_, hashValues(vertex, 0x76u, 0x6c6fu),
+              rayCount);
+}
+
+std::array<Color, 2> GlossyTransport::at(const Element& element, const RadiositySolution& solution,
+                                         int samples, std::uint64_t seed,
+                                         std::uint64_t& rayCount) const {
     std::array<Color, 2> E;
+    if (!(element.reflectance.maxComponent() > 0)) return E;
     for (Side side : kBothSides) {
-        if (!wanted[sideIndex(side)]) continue;
         const Vec3 n = side == Side::Front ? element.surfaceNormal : -element.surfaceNormal;
         Vec3 a, b;
         coordinateSystem(n, a, b);

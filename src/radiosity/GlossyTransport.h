@@ -1,12 +1,15 @@
 #pragma once
 
 #include <array>
+#include <atomic>
 #include <cstdint>
+#include <vector>
 
 #include "math/Color.h"
 #include "math/Ray.h"
 #include "radiosity/Element.h"
 #include "radiosity/Patch.h"
+#include "radiosity/RadiosityMesh.h"
 #include "scene/LightSampler.h"
 
 namespace lancer {
@@ -25,16 +28,29 @@ class Scene;
 // rare, very bright emitter samples do not show as blotches.
 class GlossyTransport {
 public:
-    explicit GlossyTransport(const Scene& scene);
+    // Rounds of it a solver makes, each from the solution the one before left: twice, so that
+    // light reflected by a glossy surface twice is in too.
+    static constexpr int kRounds = 2;
 
-    // The irradiance on each side of the element at its surface point (none on a side `wanted`
-    // leaves out), from `solution`'s diffuse light and the emitters, through one glossy
-    // reflection, from `samples` rays. `seed` places them; rayCount grows by the rays traced.
-    std::array<Color, 2> at(const Element& element, const std::array<bool, 2>& wanted,
-                            const RadiositySolution& solution, int samples, std::uint64_t seed,
-                            std::uint64_t& rayCount) const;
+    // `samples` rays per element, four times as many per vertex (which the image shows).
+    GlossyTransport(const Scene& scene, int samples);
+
+    // At each of `elements` of the mesh, from `solution` (`round` seeds the samples); the
+    // rays traced are added to rayCount. Stops early once `cancel` is set.
+    std::vector<std::array<Color, 2>> atElements(const RadiosityMesh& mesh,
+                                                 const std::vector<std::uint32_t>& elements,
+                                                 const RadiositySolution& solution, int round,
+                                                 const std::atomic<bool>* cancel,
+                                                 std::uint64_t& rayCount) const;
+    // At the gather site of vertex `vertex`, from `solution`.
+    std::array<Color, 2> atVertex(const Element& site, std::size_t vertex,
+                                  const RadiositySolution& solution, std::uint64_t& rayCount) const;
 
 private:
+    // The irradiance on each side of the element at its surface point (none where it reflects
+    // nothing), through one glossy reflection, from `samples` rays placed by `seed`.
+    std::array<Color, 2> at(const Element& element, const RadiositySolution& solution, int samples,
+                            std::uint64_t seed, std::uint64_t& rayCount) const;
     // What the first surface along the ray reflects back along it through its glossy lobes
     // (radiance), with the sample numbers that `seed` gives.
     Color glossyRadiance(const Ray& ray, const RadiositySolution& solution, std::uint64_t seed,
@@ -42,6 +58,7 @@ private:
 
     const Scene& scene_;
     LightSampler emitters_;
+    int samples_;
     float offset_;  // how far rays start off the element's surface point
 };
 

@@ -77,10 +77,6 @@ constexpr float kNearSpread = 64;
 // links over kFewCandidates is the last as well.
 constexpr int kMaxRefinementPasses = 3;
 constexpr std::size_t kFewCandidates = 1000;
-// Rounds of light through glossy reflections, each from the solution the one before left.
-constexpr int kGlossyRounds = 2;
-// The vertices, which the image shows, estimate it with this many times the samples.
-constexpr int kVertexGlossyFactor = 4;
 
 float longestEdge(const std::array<Vec3, 3>& t) {
     return std::max({length(t[1] - t[0]), length(t[2] - t[1]), length(t[0] - t[2])});
@@ -122,11 +118,11 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene)
     RadiositySettings roots = settings_;
     roots.patchSize = roots.elementSize = patchSize_;
     mesh_ = PatchMesher(scene, roots).mesh();
-    fingerprint_ = hashValues(
+    fingerprint_ =
         hashValues(mesh_.fingerprint(scene, settings_), 0x4852u,  // "HR"
-                   std::bit_cast<std::uint32_t>(settings_.refinementTolerance), settings_.clusters),
-        scene.hasGlossyMaterial() ? settings_.glossySamples : 0);
-    if (scene.hasGlossyMaterial() && settings_.glossySamples > 0) glossy_.emplace(scene);
+                   std::bit_cast<std::uint32_t>(settings_.refinementTolerance), settings_.clusters);
+    if (scene.hasGlossyMaterial() && settings_.glossySamples > 0)
+        glossy_.emplace(scene, settings_.glossySamples);
     for (const Patch& p : mesh_.patches)
         for (std::uint32_t e = p.firstElement; e < p.firstElement + p.elementCount; ++e)
             roots_.push_back(e);
@@ -879,16 +875,11 @@ Color HierarchicalRadiosity::emittedDirectly(std::uint32_t element, Side side) c
 }
 
 void HierarchicalRadiosity::gatherThroughGlossy(int round) {
-    const RadiositySolution current = snapshot();
     const std::vector<std::uint32_t> leaves = mesh_.leaves();
-    rays_ +=
-        parallelForCounting(leaves.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
-            const Element& e = mesh_.elements[leaves[i]];
-            const bool reflects = e.reflectance.maxComponent() > 0;
-            fromGlossy_[leaves[i]] =
-                glossy_->at(e, {reflects, reflects}, current, settings_.glossySamples,
-                            hashValues(leaves[i], round, 0x6c6fu), rays);
-        });
+    const std::vector<std::array<Color, 2>> E =
+        glossy_->atElements(mesh_, leaves, snapshot(), round, cancel_, rays_);
+    for (std::size_t i = 0; i < leaves.size(); ++i)
+        fromGlossy_[leaves[i]] = E[i];
 }
 
 void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
@@ -917,12 +908,7 @@ void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
     rays_ += parallelForCounting(count, 16, cancel_, [&](std::size_t v, std::uint64_t& rays) {
         const Element at = smoothing.gatherSite(scene_, v, rays);
         SplitIrradiance E;
-        if (glossy_) {
-            const bool reflects = at.reflectance.maxComponent() > 0;
-            E.total = glossy_->at(at, {reflects, reflects}, *current,
-                                  kVertexGlossyFactor * settings_.glossySamples,
-                                  hashValues(v, 0x76u, 0x6c6fu), rays);
-        }
+        if (glossy_) E.total = glossy_->atVertex(at, v, *current, rays);
         if (!scene_.lights().empty())
             for (Side side : kBothSides)
                 E.direct[sideIndex(side)] = LightIrradiance::at(
@@ -1019,7 +1005,7 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
     // The light through glossy reflections, from the solution as it stands, then iterated with
     // the rest; twice, so that it is itself reflected by the glossy surfaces.
     if (glossy_)
-        for (int round = 0; round < kGlossyRounds; ++round) {
+        for (int round = 0; round < GlossyTransport::kRounds; ++round) {
             gatherThroughGlossy(round);
             if (cancelled() || !iterate(resolved, carryOn)) return std::nullopt;
         }

@@ -1,9 +1,9 @@
 #include "radiosity/ProgressiveRadiosity.h"
-#include "geometry/Shape.h"
 
 #include <atomic>
 #include <cmath>
 
+#include "geometry/Shape.h"
 #include "lights/Light.h"
 #include "radiosity/LightIrradiance.h"
 #include "radiosity/PatchMesher.h"
@@ -30,11 +30,6 @@ constexpr double kMostTaken = 1.1;
 // Stratified samples per area light when lighting elements (more if the light asks for more).
 constexpr int kAreaLightSamples = 16;
 
-// Rounds of light through glossy reflections, each from the solution the one before left.
-constexpr int kGlossyRounds = 2;
-// The vertices, which the image shows, estimate it with this many times the samples.
-constexpr int kVertexGlossyFactor = 4;
-
 }  // namespace
 
 ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene)
@@ -43,10 +38,9 @@ ProgressiveRadiosity::ProgressiveRadiosity(const Scene& scene)
     patchSize_ = mesher.patchSize();
     mesh_ = mesher.mesh();
 
-    const bool glossy = scene.hasGlossyMaterial() && settings_.glossySamples > 0;
-    fingerprint_ =
-        hashValues(mesh_.fingerprint(scene, settings_), glossy ? settings_.glossySamples : 0);
-    if (glossy) glossy_.emplace(scene);
+    fingerprint_ = mesh_.fingerprint(scene, settings_);
+    if (scene.hasGlossyMaterial() && settings_.glossySamples > 0)
+        glossy_.emplace(scene, settings_.glossySamples);
 }
 
 std::array<Color, 2> ProgressiveRadiosity::lightIrradiance(const Element& e, std::uint64_t key,
@@ -232,20 +226,15 @@ void ProgressiveRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
     const auto key = static_cast<std::uint64_t>(mesh_.elements.size());
     const std::optional<RadiositySolution> current =
         glossy_ ? std::optional<RadiositySolution>(snapshot()) : std::nullopt;
-    rays_ += parallelForCounting(
-        smoothing.vertexIrradiance.size(), 16, cancel_, [&](std::size_t v, std::uint64_t& rays) {
-            const Element site = smoothing.gatherSite(scene_, v, rays);
-            SplitIrradiance E = gather(site, key + v, rays);
-            if (glossy_) {
-                const bool reflects = site.reflectance.maxComponent() > 0;
-                E += {glossy_->at(site, {reflects, reflects}, *current,
-                                  kVertexGlossyFactor * settings_.glossySamples,
-                                  hashValues(v, 0x76u, 0x6c6fu), rays),
-                      {}};
-            }
-            smoothing.vertexIrradiance[v] = E.total;
-            smoothing.vertexDirect[v] = E.direct;
-        });
+    rays_ += parallelForCounting(smoothing.vertexIrradiance.size(), 16, cancel_,
+                                 [&](std::size_t v, std::uint64_t& rays) {
+                                     const Element site = smoothing.gatherSite(scene_, v, rays);
+                                     SplitIrradiance E = gather(site, key + v, rays);
+                                     if (glossy_)
+                                         E += {glossy_->atVertex(site, v, *current, rays), {}};
+                                     smoothing.vertexIrradiance[v] = E.total;
+                                     smoothing.vertexDirect[v] = E.direct;
+                                 });
 }
 
 RadiositySolution ProgressiveRadiosity::solve() {
@@ -285,15 +274,8 @@ bool ProgressiveRadiosity::shootUntilConverged(
 
 void ProgressiveRadiosity::gatherThroughGlossy(const std::vector<std::uint32_t>& receivers,
                                                int round) {
-    const RadiositySolution current = snapshot();
-    std::vector<std::array<Color, 2>> E(receivers.size());
-    rays_ +=
-        parallelForCounting(receivers.size(), 16, cancel_, [&](std::size_t i, std::uint64_t& rays) {
-            const Element& e = mesh_.elements[receivers[i]];
-            const bool reflects = e.reflectance.maxComponent() > 0;
-            E[i] = glossy_->at(e, {reflects, reflects}, current, settings_.glossySamples,
-                               hashValues(receivers[i], round, 0x6c6fu), rays);
-        });
+    const std::vector<std::array<Color, 2>> E =
+        glossy_->atElements(mesh_, receivers, snapshot(), round, cancel_, rays_);
     // What is new since the last round is received, and reflected as unshot radiosity.
     for (std::size_t i = 0; i < receivers.size(); ++i) {
         Element& e = mesh_.elements[receivers[i]];
@@ -337,7 +319,7 @@ std::optional<RadiositySolution> ProgressiveRadiosity::solve(
     // The light through glossy reflections, from the solution as it stands, shot on with the
     // rest; twice, so that it is itself reflected by the glossy surfaces.
     if (glossy_)
-        for (int round = 0; round < kGlossyRounds; ++round) {
+        for (int round = 0; round < GlossyTransport::kRounds; ++round) {
             gatherThroughGlossy(receivers, round);
             if (cancelled() || !shootUntilConverged(receivers, carryOn)) return std::nullopt;
         }

@@ -106,6 +106,8 @@ std::uint64_t RadiosityMesh::fingerprint(const Scene& scene,
         }
     h = fold(fold(fold(h, settings.patchSize), settings.elementSize), settings.threshold);
     h = fold(h, settings.subdivisionTolerance);
+    // The glossy transport's samples, where there is a glossy surface for it to follow.
+    h = hashValues(h, scene.hasGlossyMaterial() ? settings.glossySamples : 0);
     return hashValues(h, settings.maxShots, settings.subdivisionLevels, settings.visibilityRays);
 }
 
