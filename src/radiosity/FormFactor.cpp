@@ -129,7 +129,10 @@ Color FormFactor::visibility(const Element& receiver, const std::array<Vec3, 3>*
     from.ng = receiver.surfaceNormal;
     Vec3 start = receiver.centroid;  // on the flat element, for the test of what is behind
     Color visible;
-    int counted = 0;
+    float weights = 0;
+    const float pieceArea = 0.5f *
+                            length(cross(triangle[1] - triangle[0], triangle[2] - triangle[0])) /
+                            static_cast<float>(rays);
     for (int k = 0; k < rays; ++k) {
         if (receiverCorners) {
             // Independent of the target's cell: pairing cell k with cell k would be biased.
@@ -152,12 +155,23 @@ Color FormFactor::visibility(const Element& receiver, const std::array<Vec3, 3>*
                 offsetRayOrigin(target, gamma(16) * abs(target), towardsReceiver, towardsReceiver);
         LightSample towards;
         towards.position = target;
-        towards.wi = normalize(target - from.p);
-        visible += ShadowRays::transmittance(scene_, from, towards, rayCount);
-        ++counted;
+        const Vec3 d = target - from.p;
+        towards.wi = normalize(d);
+        // Each ray weighs as much as the form factor of the piece of the source it stands for
+        // (Wallace et al.'s disc of area A / rays): the objects standing in a room hide mostly
+        // what is seen near the horizon, where the kernel is small, and a plain share of blocked
+        // rays took as much off for that as for the source's nearest part.
+        // (The cosines' magnitudes: from a curved receiver's surface point, a ray to a point
+        // in front of its flat element can leave a little behind the element's normal.)
+        const float weight = std::abs(dot(n, towards.wi) * dot(shooter.normal, towards.wi)) /
+                             (kPi * lengthSquared(d) + pieceArea);
+        visible += weight * ShadowRays::transmittance(scene_, from, towards, rayCount);
+        weights += weight;
     }
-    if (counted == 0) return Color(0);
-    return visible / static_cast<float>(counted);
+    if (!(weights > 0)) return Color(0);
+    // Divided, not multiplied by the reciprocal: every ray through must give exactly 1, or the
+    // link would count as partly occluded.
+    return {visible.r / weights, visible.g / weights, visible.b / weights};
 }
 
 }  // namespace lancer

@@ -15,9 +15,10 @@ class Scene;
 // Form factors from a receiving element to a shooting patch, by the exact point-to-polygon
 // formula (Lambert's contour integral) for the unoccluded part and rays cast through the scene's
 // BVH for visibility (the approach of Wallace, Elmquist and Haines 1989, with the analytic
-// formula instead of their disc approximation): F = F_exact * (fraction of rays from the element
-// to points spread over the patch that get through). Rays through transmissive surfaces keep
-// their transmission, as Whitted shadow rays do; mirrors and other surfaces block.
+// formula where they summed discs): F = F_exact * (the share of rays from the element to points
+// spread over the patch that get through, each weighed by their disc form factor). Rays through
+// transmissive surfaces keep their transmission, as Whitted shadow rays do; mirrors and other
+// surfaces block.
 class FormFactor {
 public:
     explicit FormFactor(const Scene& scene);
@@ -53,11 +54,13 @@ public:
                             Side shooterSide, int rays, std::uint64_t seed,
                             std::uint64_t& rayCount) const;
 
-    // The fraction (per colour channel) of `rays` rays that get through from points of the
+    // The share (per colour channel) of `rays` rays that get through from points of the
     // receiver's side `receiverSide` to points of the side `shooterSide` of a triangle of the
     // patch `shooter`: from points spread uniformly over the receiver (from its surface point,
     // when it is curved: its own surface would block the chords' points) to stratified points of
-    // the triangle. Rays to points behind the receiver are not counted; 0 when none is left.
+    // the triangle, each ray weighed by the form factor of the piece of the triangle it stands for,
+    // cos cos / (pi d^2 + area / rays). Rays to points behind the receiver are not counted; 0
+    // when none is left.
     Color areaVisibility(const Element& receiver, const std::array<Vec3, 3>& receiverCorners,
                          bool receiverCurved, Side receiverSide,
                          const std::array<Vec3, 3>& triangle, const Patch& shooter,

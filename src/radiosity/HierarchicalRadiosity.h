@@ -29,8 +29,8 @@ class VertexSmoothing;
 //     factor over the receiver, plus the whole form factor when the link is partly occluded) is
 //     replaced by links from the longer of its two ends' children; the form factor of a link is the
 //     exact point-to-polygon formula averaged over three points of the receiver, its visibility the
-//     fraction of `visibility_rays` rays from points of the receiver to points of the source that
-//     get through;
+//     share of `visibility_rays` rays from points of the receiver to points of the source that
+//     get through, each weighed by its piece of the source's form factor (FormFactor);
 //  3. elements whose light from the scene's lights (point, spot, area...) varies across them are
 //     split too, where reflectance x that variation x their area exceeds the same threshold;
 //  4. Jacobi iterations: each element gathers the radiosity of its links' sources, each leaf adds
@@ -83,7 +83,7 @@ public:
         Side sourceSide = Side::Front;
         float unoccluded = 0;  // the form factor without occlusion
         float spread = 0;      // its spread over the receiver (max - min of the three points)
-        Color visibility;      // the fraction of rays that got through, per channel
+        Color visibility;      // the weighed share of rays that got through, per channel
         Color formFactor() const { return unoccluded * visibility; }
         bool partlyVisible() const {
             return visibility.maxComponent() > 0 &&

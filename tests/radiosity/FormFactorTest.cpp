@@ -159,6 +159,43 @@ TEST(FormFactorTest, NothingHidesTwoWallsOfACornerFromEachOther) {
     EXPECT_EQ(hidden, 0) << "of " << receivers.size() * sources.size() << " pairs";
 }
 
+TEST(FormFactorTest, RaysWeighAsMuchAsThePieceOfTheSourceTheyStandFor) {
+    // A small floor element 1 in front of a unit wall, and a black strip 0.2 high at 0.9 that
+    // hides the wall below 0.2 / 0.9 from it: 22% of the wall's area, but only the part seen
+    // near the horizon, where cos cos / d^2 is small. F times the visibility must be the form
+    // factor of the part left in view (the fraction of rays that get through took 22% off).
+    const std::string objects =
+        square(Vec3(-0.01f, 0, 0.01f), Vec3(0.02f, 0, 0), Vec3(0, 0, -0.02f)) + ", " +
+        square(Vec3(-0.5f, 0, -1), Vec3(1, 0, 0), Vec3(0, 1, 0)) + ", " +
+        square(Vec3(-2, 0, -0.9f), Vec3(4, 0, 0), Vec3(0, 0.2f, 0), "black");
+    const SquarePair p = squares(objects, Vec3(0, 1, 0), Vec3(0, 0, 1), 4);
+    ASSERT_EQ(p.a.size(), 2u);
+    ASSERT_GE(p.b.size(), 2u);
+    const FormFactor formFactor(p.scene);
+    const Element& receiver = p.mesh.elements[p.mesh.patches[p.a[0]].firstElement];
+    const Vec3d at(receiver.centroid), up(0, 1, 0);
+    double seen = 0, whole = 0;
+    std::uint64_t rays = 0;
+    for (std::uint32_t patch : p.b) {
+        if (p.mesh.patches[patch].corners[0].z > -0.95f) continue;  // the strip
+        const std::array<Vec3, 3>& wall = p.mesh.patches[patch].corners;
+        const double F = FormFactor::pointToTriangle(at, up, wall);
+        const Color visibility =
+            formFactor.areaVisibility(receiver, p.mesh.corners(receiver), false, Side::Front, wall,
+                                      p.mesh.patches[patch], Side::Front, 4096, patch, rays);
+        seen += F * visibility.r;
+        whole += F;
+    }
+    // The wall above the shadow's edge, as seen from the element's centroid.
+    const float edge = 0.2f * (1 - receiver.centroid.z) / (0.9f - receiver.centroid.z);
+    const Vec3 a(-0.5f, edge, -1), b(0.5f, edge, -1), c(0.5f, 1, -1), d(-0.5f, 1, -1);
+    const double exact = FormFactor::pointToTriangle(at, up, {a, b, c}) +
+                         FormFactor::pointToTriangle(at, up, {a, c, d});
+    ASSERT_LT(exact, 0.95 * whole);
+    ASSERT_GT(exact, (1 - edge) * whole + 0.1 * whole);  // the area fraction would be far off
+    EXPECT_NEAR(seen, exact, 0.01 * exact);
+}
+
 TEST(FormFactorTest, ReciprocityForUnequalPatches) {
     // A unit square and a 2 x 0.5 rectangle, tilted: A_i F_ij = A_j F_ji.
     const std::string objects = square(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)) + ", " +
