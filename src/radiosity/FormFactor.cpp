@@ -92,10 +92,20 @@ double FormFactor::pointToSideOfTriangleApprox(const Vec3d& p, const Vec3d& n,
         return pointToSideOfTriangle(p, n, triangle, triangleNormal, triangleSide);
     const double height = heightOnSide(p, triangle, triangleNormal, triangleSide);
     if (height == 0) return 0;
-    const double cosP = dot(n, towards);
-    if (!(cosP > 0)) return 0;
-    // cos(theta_t) d = |height| to the plane, cos(theta_p) d = n . towards.
-    return area * cosP * std::abs(height) / (std::numbers::pi * d2 * d2);
+    // The kernel cos(theta_p) cos(theta_t) / (pi d^2) integrated over the triangle by the
+    // three-point rule (exact for quadratics): at the centroid alone it is 2-3% high at this
+    // distance, which made the form factors of a closed room add up to more than 1.
+    double sum = 0;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const Vec3d q = (4.0 * Vec3d(triangle[k]) + Vec3d(triangle[(k + 1) % 3]) +
+                         Vec3d(triangle[(k + 2) % 3])) /
+                            6.0 -
+                        p;
+        const double cosP = dot(n, q), q2 = dot(q, q);
+        // cos(theta_t) d = |height| to the plane, cos(theta_p) d = n . q.
+        if (cosP > 0) sum += cosP / (q2 * q2);
+    }
+    return area * std::abs(height) * sum / (3 * std::numbers::pi);
 }
 
 Color FormFactor::elementToTriangle(const Element& receiver, Side receiverSide,

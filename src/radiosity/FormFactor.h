@@ -35,10 +35,11 @@ public:
                                         const Vec3& triangleNormal, Side triangleSide);
 
     // Either of the above where the triangle is near p, and where it is far (beyond
-    // kFarField times its longest edge, whose square is given) the differential-area
-    // approximation A cos(theta_p) cos(theta_t) / (pi d^2) to its centroid: a few percent off at
-    // that distance (about (r / d)^2 for a disc of radius r seen head-on), and without the exact
-    // formula's arctangents.
+    // kFarField times its longest edge, whose square is given) the kernel
+    // cos(theta_p) cos(theta_t) / (pi d^2) integrated over the triangle by the three-point rule,
+    // without the exact formula's arctangents: within 0.5% at that distance, where the kernel at
+    // the centroid times the area was 2-3% high (about (r / d)^2 for a disc of radius r seen
+    // head-on), and a closed room's form factors added up to 1% more than 1.
     static constexpr double kFarField = 2;
     static double pointToSideOfTriangleApprox(const Vec3d& p, const Vec3d& n,
                                               const std::array<Vec3, 3>& triangle,

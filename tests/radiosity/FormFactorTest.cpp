@@ -80,6 +80,34 @@ TEST(FormFactorTest, APointOnTheTrianglesPlaneSeesNothingOfIt) {
     EXPECT_GT(FormFactor::pointToSideOfTriangle(near, -Vec3d(n), triangle, n, Side::Front), 0.99);
 }
 
+TEST(FormFactorTest, TheFarFieldApproximationMatchesTheExactFormula) {
+    // Triangles just beyond the far-field distance (kFarField times their longest edge), seen
+    // head-on, tilted and off to the side: the approximation agrees with the exact formula.
+    const std::array<Vec3, 3> triangle{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0.3f, 0.8f, 0)};
+    const Vec3 normal(0, 0, 1);
+    const Vec3d centroid = (Vec3d(triangle[0]) + Vec3d(triangle[1]) + Vec3d(triangle[2])) / 3.0;
+    const double area = 0.4, edge2 = 1;
+    double worst = 0;
+    for (const Vec3d& direction :
+         {Vec3d(0, 0, 1), Vec3d(0.5, 0.2, 1), Vec3d(-0.8, 0.6, 0.4), Vec3d(0.9, -0.1, 0.3)}) {
+        for (const double distance : {2.05, 2.5, 3.5}) {
+            const Vec3d p = centroid + distance * normalize(direction);
+            const Vec3d towards = normalize(centroid - p);
+            for (const Vec3d& tilt :
+                 {Vec3d(0, 0, 0), Vec3d(0.4, 0, 0), Vec3d(0, -0.3, 0.2), Vec3d(-0.2, 0.3, -0.3)}) {
+                const Vec3d n = normalize(towards + tilt);
+                const double exact =
+                    FormFactor::pointToSideOfTriangle(p, n, triangle, normal, Side::Front);
+                const double approx = FormFactor::pointToSideOfTriangleApprox(
+                    p, n, triangle, normal, Side::Front, area, edge2);
+                ASSERT_GT(exact, 0);
+                worst = std::max(worst, std::abs(approx / exact - 1));
+            }
+        }
+    }
+    EXPECT_LT(worst, 5e-3);
+}
+
 // Two unit squares; elements of 1/32 make the area integral's quadrature error far below the
 // tolerance (2e-4, about 0.1%).
 struct SquarePair {
