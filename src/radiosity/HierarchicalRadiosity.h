@@ -229,6 +229,9 @@ private:
     // The leaves' coverage from the links of the leaves and their ancestors, and, `resolved`,
     // their terms.
     void resolveAtLeaves(bool resolved);
+    // What scales back the irradiance a leaf's links bring on one side, where their form factors
+    // add up to more than it can see (1 elsewhere).
+    float coverageScale(std::uint32_t leaf, std::size_t side) const;
     // The irradiance at every vertex, and its part straight from the sampled emitters.
     void gatherAtVertices(VertexSmoothing& smoothing);
     // fromGlossy_ at every leaf, from the solution as it stands (`round` seeds the samples).
@@ -296,6 +299,8 @@ private:
     };
     std::vector<std::vector<LeafTerm>> leafTerms_;
     std::vector<std::array<float, 2>> coverage_;
+    // The part of each leaf's coverage from partly visible links (their unoccluded form factors).
+    std::vector<std::array<float, 2>> coverageSampled_;
     bool full_ = false;        // checkSize's verdict
     double initialPower_ = 0;  // emitted, and reflected from the lights' light
     double epsilon_ = 0;
