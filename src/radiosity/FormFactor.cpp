@@ -97,10 +97,8 @@ double FormFactor::pointToSideOfTriangleApprox(const Vec3d& p, const Vec3d& n,
     // distance, which made the form factors of a closed room add up to more than 1.
     double sum = 0;
     for (std::size_t k = 0; k < 3; ++k) {
-        const Vec3d q = (4.0 * Vec3d(triangle[k]) + Vec3d(triangle[(k + 1) % 3]) +
-                         Vec3d(triangle[(k + 2) % 3])) /
-                            6.0 -
-                        p;
+        // (4 t_k + t_k+1 + t_k+2) / 6, halfway from the centroid to corner k.
+        const Vec3d q = towards + 0.5 * (Vec3d(triangle[k]) - centroid);
         const double cosP = dot(n, q), q2 = dot(q, q);
         // cos(theta_t) d = |height| to the plane, cos(theta_p) d = n . q.
         if (cosP > 0) sum += cosP / (q2 * q2);
