@@ -63,6 +63,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kTriangles = 4;  // a primitive's mode
+// The most elements an accessor may have (2^28, far beyond any model lancer renders): one
+// without a buffer view is zeros, its count bounded by nothing else in the file.
+constexpr std::size_t kMostAccessorElements = std::size_t{1} << 28;
 // Extensions read, the others get a warning each.
 constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
 
@@ -336,6 +339,9 @@ std::vector<const unsigned char*> GltfReader::elements(const tinygltf::Accessor&
                                                        const std::string& what) const {
     if (accessor.sparse.isSparse) fail("accessor " + what + " is sparse, which is not supported");
     std::vector<const unsigned char*> starts;
+    if (accessor.count > kMostAccessorElements)
+        fail("accessor " + what + " has " + std::to_string(accessor.count) +
+             " elements, more than lancer reads (" + std::to_string(kMostAccessorElements) + ")");
     if (accessor.bufferView < 0) return starts;  // all zeros: the caller fills them
     if (std::size_t(accessor.bufferView) >= model_.bufferViews.size())
         fail("accessor " + what + " names a buffer view that does not exist");
@@ -364,8 +370,8 @@ std::vector<float> GltfReader::floats(int accessorIndex, int components,
         fail(what + " must have " + std::to_string(components) + " components");
     const int size = tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType));
     if (size <= 0) fail(what + " has an unknown component type");
-    std::vector<float> values(accessor.count * std::size_t(components), 0.0f);
     const auto starts = elements(accessor, std::size_t(size * components), what);
+    std::vector<float> values(accessor.count * std::size_t(components), 0.0f);
     // Integers are scaled to [0, 1] or [-1, 1] when normalized, else taken as they are
     // (KHR_mesh_quantization's positions).
     const bool normalized = accessor.normalized;
@@ -412,8 +418,8 @@ std::vector<std::uint32_t> GltfReader::indices(int accessorIndex) const {
     const int size = tinygltf::GetComponentSizeInBytes(std::uint32_t(accessor.componentType));
     if (accessor.type != TINYGLTF_TYPE_SCALAR || (size != 1 && size != 2 && size != 4))
         fail("indices must be unsigned scalars of 8, 16 or 32 bits");
-    std::vector<std::uint32_t> values(accessor.count, 0);
     const auto starts = elements(accessor, std::size_t(size), "of the indices");
+    std::vector<std::uint32_t> values(accessor.count, 0);
     for (std::size_t i = 0; i < starts.size(); ++i) {
         std::uint32_t v = 0;
         if (size == 1) {

@@ -365,6 +365,16 @@ TEST_F(GltfTest, AccessorBeyondItsBufferIsAnError) {
     EXPECT_NE(failure(doc.text()).find("beyond its buffer"), std::string::npos);
 }
 
+TEST_F(GltfTest, AccessorOfZerosTooLargeIsAnErrorNotAnAllocation) {
+    // Without a buffer view an accessor is zeros, and its count is all the file says: a fuzzed
+    // file asked for 2^56 positions, which the loader tried to allocate before looking.
+    GltfDocument doc;
+    doc.addRoot(doc.node({{"mesh", doc.unitTriangle()}}));
+    doc.json_()["accessors"][0].erase("bufferView");
+    doc.json_()["accessors"][0]["count"] = 66810146937514636;
+    EXPECT_NE(failure(doc.text()).find("elements, more than lancer reads"), std::string::npos);
+}
+
 TEST_F(GltfTest, ImageViewBeyondItsBufferIsAnErrorNotARead) {
     // tinygltf passes the view's place in the buffer on unchecked: read past the buffer's end
     // under AddressSanitizer before the loader checked it (found by fuzz_gltf).
