@@ -367,7 +367,7 @@ TEST_F(GltfTest, AccessorBeyondItsBufferIsAnError) {
 
 TEST_F(GltfTest, AccessorOfZerosTooLargeIsAnErrorNotAnAllocation) {
     // Without a buffer view an accessor is zeros, and its count is all the file says: a fuzzed
-    // file asked for 2^56 positions, which the loader tried to allocate before looking.
+    // file asked for 5.5e15 normals, which the loader tried to allocate before looking.
     GltfDocument doc;
     doc.addRoot(doc.node({{"mesh", doc.unitTriangle()}}));
     doc.json_()["accessors"][0].erase("bufferView");
