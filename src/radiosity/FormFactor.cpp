@@ -5,6 +5,7 @@
 
 #include "lights/Light.h"
 #include "radiosity/SurfaceProbe.h"
+#include "radiosity/TriangleQuadrature.h"
 #include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
 #include "scene/ShadowRays.h"
@@ -95,10 +96,11 @@ double FormFactor::pointToSideOfTriangleApprox(const Vec3d& p, const Vec3d& n,
     // The kernel cos(theta_p) cos(theta_t) / (pi d^2) integrated over the triangle by the
     // three-point rule (exact for quadratics): at the centroid alone it is 2-3% high at this
     // distance, which made the form factors of a closed room add up to more than 1.
+    const std::array<Vec3d, 3> points = triangleQuadraturePoints<double>(
+        {Vec3d(triangle[0]), Vec3d(triangle[1]), Vec3d(triangle[2])});
     double sum = 0;
-    for (std::size_t k = 0; k < 3; ++k) {
-        // (4 t_k + t_k+1 + t_k+2) / 6, halfway from the centroid to corner k.
-        const Vec3d q = towards + 0.5 * (Vec3d(triangle[k]) - centroid);
+    for (const Vec3d& point : points) {
+        const Vec3d q = point - p;
         const double cosP = dot(n, q), q2 = dot(q, q);
         // cos(theta_t) d = |height| to the plane, cos(theta_p) d = n . q.
         if (cosP > 0) sum += cosP / (q2 * q2);

@@ -12,6 +12,7 @@
 #include "radiosity/RadiosityReporter.h"
 #include "radiosity/SplitIrradiance.h"
 #include "radiosity/SurfaceProbe.h"
+#include "radiosity/TriangleQuadrature.h"
 #include "radiosity/VertexSmoothing.h"
 #include "sampling/Sampling.h"
 #include "sampling/StratifiedPoint.h"
@@ -92,15 +93,6 @@ float longestEdge(const std::array<Vec3, 3>& t) {
 
 double square(float x) {
     return static_cast<double>(x) * x;
-}
-
-// The three points of a triangle where its form factors and light are evaluated: the
-// quadrature rule of degree 2 with points inside the triangle (barycentric 2/3, 1/6, 1/6), away
-// from the edges that neighbours and contact lines share.
-std::array<Vec3, 3> quadraturePoints(const std::array<Vec3, 3>& t) {
-    constexpr float kNear = 4.0f / 6, kFar = 1.0f / 6;
-    return {kNear * t[0] + kFar * (t[1] + t[2]), kNear * t[1] + kFar * (t[2] + t[0]),
-            kNear * t[2] + kFar * (t[0] + t[1])};
 }
 
 // receivedShare() from (tx, ty, tz), the vector from the element's centroid to the source's
@@ -204,7 +196,7 @@ void HierarchicalRadiosity::prepareElements(std::size_t first) {
         fromLights_[e] = {};
         lightSpread_[e] = 0;
         if (scene_.lights().empty()) return;
-        const std::array<Vec3, 3> points = quadraturePoints(corners);
+        const std::array<Vec3, 3> points = triangleQuadraturePoints(corners);
         for (Side side : kBothSides) {
             const Vec3 n = side == Side::Front ? element.normal : -element.normal;
             float least = kInfinity, most = 0;
@@ -250,7 +242,7 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
     const float height = dot(source.normal, receiver.centroid - sourceCorners[0]);
     if (height == 0 || !std::isfinite(height)) return d;
     const Side sourceSide = height > 0 ? Side::Front : Side::Back;
-    const std::array<Vec3, 3> points = quadraturePoints(receiverCorners);
+    const std::array<Vec3, 3> points = triangleQuadraturePoints(receiverCorners);
     const double sourceEdge2 = square(longestEdge(sourceCorners));
     // Links from strong sources (the lamps) trace more rays: their shadows are what shows.
     const bool brightSource = radiosity_[c.source][sideIndex(sourceSide)].average() * source.area >=
@@ -727,7 +719,7 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
     parallelFor(leaves.size(), 8, [&](std::size_t i) {
         const std::uint32_t leaf = leaves[i];
         const Element& element = mesh_.elements[leaf];
-        const std::array<Vec3, 3> points = quadraturePoints(mesh_.corners(element));
+        const std::array<Vec3, 3> points = triangleQuadraturePoints(mesh_.corners(element));
         for (std::size_t side = 0; side < 2; ++side)
             coverage_[leaf][side] += clusterCoverage[leaf][side].average();
         // At most a term per link: reserved at once, not grown by doubling (a third of the terms'
