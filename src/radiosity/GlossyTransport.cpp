@@ -80,11 +80,15 @@ Color GlossyTransport::glossyRadiance(const Ray& ray, const RadiositySolution& s
                                       std::uint64_t seed, std::uint64_t& rayCount) const {
     const std::optional<Hit> found = scene_.intersect(ray, kInfinity);
     if (!found || !found->material->reflectsGlossily()) return Color(0);
-    const Hit& hit = *found;
-    const Vec3 wo = -ray.direction;
+    return reflectedGlossily(*found, -ray.direction, solution, seed, 1, rayCount);
+}
+
+Color GlossyTransport::reflectedGlossily(const Hit& hit, const Vec3& wo,
+                                         const RadiositySolution& solution, std::uint64_t seed,
+                                         int reflections, std::uint64_t& rayCount) const {
     const Bsdf bsdf(*hit.material, hit, wo, Bsdf::Weights::EnergyConserving);
     if (bsdf.glossyLobeCount() == 0) return Color(0);
-    const Vec3 n = bsdf.shadingNormal(hit.frontFace(ray));
+    const Vec3 n = bsdf.shadingNormal(dot(wo, hit.ng) > 0);  // the side wo leaves from
     Color L;
     // An emitter sample, weighed against the lobes' own samples, which find the same emitters
     // (multiple importance sampling: a sharp lobe's samples find a lamp that its f would make a
@@ -133,6 +137,11 @@ Color GlossyTransport::glossyRadiance(const Ray& ray, const RadiositySolution& s
             if (const std::optional<Color> E =
                     solution.irradiance(seen->p, seen->ng, -next.direction))
                 there += kd * *E / kPi;
+        // A glossy surface seen through a glossy lobe (the lamp's highlight on a glossy floor,
+        // seen in a glossy sphere): the solution holds none of what it reflects glossily.
+        if (reflections < kLongestGlossyChain && seen->material->reflectsGlossily())
+            there += reflectedGlossily(*seen, -next.direction, solution, hashValues(seed, 6, lobe),
+                                       reflections + 1, rayCount);
         L += r->weight * there;
     }
     return L;

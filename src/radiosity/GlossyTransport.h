@@ -14,6 +14,7 @@
 
 namespace lancer {
 
+struct Hit;
 class RadiositySolution;
 class Scene;
 
@@ -31,6 +32,9 @@ public:
     // Rounds of it a solver makes, each from the solution the one before left: twice, so that
     // light reflected by a glossy surface twice is in too.
     static constexpr int kRounds = 2;
+    // Glossy reflections in a row that a sample follows (a glossy floor's highlight reflected by
+    // a glossy sphere onto the walls is two); the next ones carry little light.
+    static constexpr int kLongestGlossyChain = 4;
 
     // `samples` rays per element, four times as many per vertex (which the image shows).
     GlossyTransport(const Scene& scene, int samples);
@@ -55,6 +59,11 @@ private:
     // (radiance), with the sample numbers that `seed` gives.
     Color glossyRadiance(const Ray& ray, const RadiositySolution& solution, std::uint64_t seed,
                          std::uint64_t& rayCount) const;
+    // What `hit`'s glossy lobes reflect towards wo, the `reflections`-th glossy reflection of a
+    // chain: emitters, the solution's diffuse light and, up to kLongestGlossyChain reflections,
+    // the glossy light of the surfaces its lobes' samples meet.
+    Color reflectedGlossily(const Hit& hit, const Vec3& wo, const RadiositySolution& solution,
+                            std::uint64_t seed, int reflections, std::uint64_t& rayCount) const;
 
     const Scene& scene_;
     LightSampler emitters_;
