@@ -1,6 +1,8 @@
 #!/usr/bin/env python3
-"""Time-to-error on the Cornell box: lancer (path, radiosity) and Mitsuba 3 (scalar_rgb,
+"""Time-to-error on the Cornell box: lancer's path tracer and Mitsuba 3 (scalar_rgb,
 llvm_ad_rgb) against Mitsuba's 16384-spp reference, in the same run, on the same threads.
+(Radiosity's curve on this box, against the reference without a depth limit and beside POV-Ray's
+radiosity, is bench/radiosity_time_to_error.py's.)
 
 Run it through bench/cornell_time_to_error.sh, which installs Mitsuba and brings lancer up to
 date; see bench/README.md. Before each timed run it waits (a while) for idle CPUs. It writes a CSV and a log-log plot of the relative RMSE
@@ -12,7 +14,6 @@ the convergence check fails. The error measure and what the times measure: bench
 from __future__ import annotations
 
 import argparse
-import re
 import sys
 import tempfile
 from pathlib import Path
@@ -35,35 +36,15 @@ MITSUBA_MAX_DEPTH = 8  # Mitsuba counts the camera ray: its 8 is the 7 of cornel
 # independent of its samples.
 SEED = 7
 
-# Radiosity quality settings, coarse to fine: (patch_size, threshold) of the scene's "radiosity"
-# block (docs/SCENE-FORMAT.md; the defaults for this box: 0.43 and 0.01), and camera rays per
-# pixel. The rays only anti-alias, but the lamp's edges (radiance 18 against 0.5) need many: at
-# 16 spp they alone give a relative RMSE of about 10%.
-RADIOSITY_SETTINGS: list[tuple[float, float, int]] = [
-    (1.0, 0.01, 64),
-    (0.5, 0.01, 64),
-    (0.5, 0.001, 256),
-]
-
-
 class LancerRenderer:
     def __init__(self, binary: Path, threads: int, workdir: Path, gate: CpuGate):
         self.binary, self.threads, self.workdir, self.gate = binary, threads, workdir, gate
-        self.scene_text = REFERENCE_SCENE.read_text()
 
-    def scene_with_radiosity(self, patch_size: float, threshold: float) -> Path:
-        """The reference scene with a "radiosity" block added (the original has none)."""
-        block = f'"radiosity": {{"patch_size": {patch_size}, "threshold": {threshold}}},'
-        text = re.sub(r"^\{", "{\n  " + block, self.scene_text, count=1, flags=re.MULTILINE)
-        path = self.workdir / f"cornell-radiosity-{patch_size}-{threshold}.json"
-        path.write_text(text)
-        return path
-
-    def render(self, integrator: str, spp: int, scene: Path = REFERENCE_SCENE):
-        options = ["--integrator", integrator, "--spp", str(spp), "--threads", str(self.threads),
+    def render(self, spp: int):
+        options = ["--integrator", "path", "--spp", str(spp), "--threads", str(self.threads),
                    "--seed", str(SEED)]
-        output = self.workdir / f"lancer-{integrator}.exr"
-        return run_lancer(self.binary, scene, output, options, self.gate)
+        output = self.workdir / "lancer-path.exr"
+        return run_lancer(self.binary, REFERENCE_SCENE, output, options, self.gate)
 
 
 def mitsuba_cornell_box(mi) -> dict:
@@ -80,7 +61,6 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     add_common_arguments(parser, "4,16,64,256,1024,4096", "cornell-time-to-error", 0.01, 64)
     parser.add_argument("--no-mitsuba", action="store_true", help="lancer only (no Mitsuba curves)")
-    parser.add_argument("--no-radiosity", action="store_true", help="no radiosity runs")
     args = parser.parse_args()
 
     measurements = Measurements(args, REFERENCE_IMAGE)
@@ -96,31 +76,14 @@ def main() -> int:
     )
     with tempfile.TemporaryDirectory(prefix="lancer-cornell-bench.") as workdir:
         lancer = LancerRenderer(args.lancer, args.threads, Path(workdir), gate)
-        render_interleaved(
-            lambda spp: lancer.render("path", spp), mitsuba, args.path_spp, args.mitsuba_spp, record
-        )
-        for patch_size, threshold, spp in [] if args.no_radiosity else RADIOSITY_SETTINGS:
-            scene = lancer.scene_with_radiosity(patch_size, threshold)
-            image, seconds, reported, log = lancer.render("radiosity", spp, scene)
-            # "lancer: radiosity: 690 patches, 12753 elements, ... solved in 42.79 s"
-            note = "".join(re.findall(r"radiosity: (.*)", log)[-1:])
-            record(
-                "lancer radiosity",
-                f"patch_size {patch_size}, threshold {threshold}, {spp} spp",
-                spp,
-                image,
-                seconds,
-                reported,
-                note,
-            )
-
+        render_interleaved(lancer.render, mitsuba, args.path_spp, args.mitsuba_spp, record)
     return measurements.report(
         args,
         "cornell-time-to-error",
         "Cornell box: time to error",
         f"Cornell box 256x256, max depth 7 (Mitsuba 8), {args.threads} threads",
         REFERENCE_SPP,
-        ["lancer path", "lancer radiosity"],
+        ["lancer path"],
         ["mitsuba scalar_rgb", "mitsuba llvm_ad_rgb"],
     )
 

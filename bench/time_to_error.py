@@ -235,7 +235,6 @@ def plot(runs: list[Run], path: Path, title: str, reference_noise: float, refere
 
     style = {
         "lancer path": ("C0", "o"),
-        "lancer radiosity": ("C2", "s"),
         "mitsuba scalar_rgb": ("C3", "^"),
         "mitsuba llvm_ad_rgb": ("C1", "v"),
     }
