@@ -72,10 +72,14 @@ constexpr std::size_t kDecisionSlice = std::size_t{1} << 20;
 // is estimated as twice the sum of their radii over their distance where that distance is at
 // least kClusterSeparation times the sum (the point-to-point transfer's error falls with the
 // square of that ratio), and as kNearSpread where it is less: such a link is made only where what
-// it brings is negligible, since cluster links are not resolved again at the leaves as element
-// links are, and the many small ones a leaf gathers near it would add up.
+// it brings is small, since cluster links are not resolved again at the leaves as element links
+// are, and the many small ones a leaf gathers near it would add up. 24 rather than 64: a model's
+// dim near field (a knot's strands, a bunny's ears) is linked as clusters, not element to element
+// (the 200k-triangle knot: 58 million links -> 34 million, 121 s -> 84 s; its image and the
+// bunny's within 1-2% of the old error against path); at 16 the closed box's furnace with clusters
+// is 1.5% off (1% allowed), at 24 and 64 0.63% (docs/BENCHMARKS.md).
 constexpr float kClusterSeparation = 3;
-constexpr float kNearSpread = 64;
+constexpr float kNearSpread = 24;
 
 // The refinement passes: the first refines for the light put in, the second for the light of the
 // first solution, the third for what the second's links changed; each takes a round of
