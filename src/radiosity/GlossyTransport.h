@@ -18,7 +18,7 @@ struct Hit;
 class RadiositySolution;
 class Scene;
 
-// The light that reaches a diffuse surface through one glossy reflection (the `specular`
+// The light that reaches a diffuse surface through glossy reflections (the `specular`
 // Blinn-Phong lobe): what a solution of diffuse transport alone leaves out (a glossy floor sends
 // a lamp's light up to the ceiling). Estimated at a point by cosine-distributed rays; where one
 // meets a glossy surface, that surface's reflection towards the point is estimated from one
@@ -26,7 +26,9 @@ class Scene;
 // shadow ray, and one direction drawn from each glossy lobe, which finds the diffuse light of the
 // surface it meets in a solution (kd / pi times its irradiance) and the emitters' light: the two
 // techniques weighed by the power heuristic where both find an emitter, so that a sharp lobe's
-// rare, very bright emitter samples do not show as blotches.
+// rare, very bright emitter samples do not show as blotches. Where that direction meets another
+// glossy surface, its glossy reflection is estimated there the same way, and so on up to
+// kLongestGlossyChain reflections.
 class GlossyTransport {
 public:
     // Rounds of it a solver makes, each from the solution the one before left: twice, so that

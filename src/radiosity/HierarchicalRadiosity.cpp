@@ -75,7 +75,7 @@ constexpr std::size_t kDecisionSlice = std::size_t{1} << 20;
 // it brings is small, since cluster links are not resolved again at the leaves as element links
 // are, and the many small ones a leaf gathers near it would add up. 24 rather than 64: a model's
 // dim near field (a knot's strands, a bunny's ears) is linked as clusters, not element to element
-// (the 200k-triangle knot: 58 million links -> 34 million, 121 s -> 84 s; its image and the
+// (the 200k-triangle knot: 58.7 million links -> 32.2 million, 128 s -> 81 s; its image and the
 // bunny's within 1-2% of the old error against path); at 16 the closed box's furnace with clusters
 // is 1.5% off (1% allowed), at 24 and 64 0.63% (docs/BENCHMARKS.md).
 constexpr float kClusterSeparation = 3;
