@@ -5,6 +5,7 @@
 
 #include "math/Color.h"
 #include "math/Vec3.h"
+#include "radiosity/Patch.h"
 
 namespace lancer {
 
@@ -34,6 +35,13 @@ struct Element {
     std::array<Color, 2> shot;
 
     bool isLeaf() const { return firstChild == kNone; }
+    // Side `side`'s normal at the surface point: the true surface's there (a curved patch's flat
+    // element leans away from it, and light falling on the surface goes by that), turned to the
+    // side.
+    Vec3 surfaceSideNormal(Side side) const {
+        const Vec3 front = dot(surfaceNormal, normal) < 0 ? -surfaceNormal : surfaceNormal;
+        return side == Side::Front ? front : -front;
+    }
 };
 
 }  // namespace lancer

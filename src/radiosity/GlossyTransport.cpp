@@ -58,7 +58,7 @@ std::array<Color, 2> GlossyTransport::at(const Element& element, const Radiosity
     std::array<Color, 2> E;
     if (!(element.reflectance.maxComponent() > 0)) return E;
     for (Side side : kBothSides) {
-        const Vec3 n = side == Side::Front ? element.surfaceNormal : -element.surfaceNormal;
+        const Vec3 n = element.surfaceSideNormal(side);
         Vec3 a, b;
         coordinateSystem(n, a, b);
         const std::uint64_t sideSeed = hashValues(seed, sideIndex(side));

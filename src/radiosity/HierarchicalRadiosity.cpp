@@ -917,9 +917,8 @@ void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
         if (!scene_.lights().empty())
             for (Side side : kBothSides)
                 E.direct[sideIndex(side)] = LightIrradiance::at(
-                    scene_, at.surfacePoint, at.surfaceNormal,
-                    side == Side::Front ? at.normal : -at.normal, kAreaLightSamples,
-                    hashValues(v, sideIndex(side), 0x76u), rays);
+                    scene_, at.surfacePoint, at.surfaceNormal, at.surfaceSideNormal(side),
+                    kAreaLightSamples, hashValues(v, sideIndex(side), 0x76u), rays);
         for (std::size_t side = 0; side < 2; ++side)
             E.total[side] += E.direct[side];
         for (std::uint32_t e = smoothing.siteLeaf(v); e != Element::kNone; e = parent_[e])

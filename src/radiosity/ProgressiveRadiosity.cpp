@@ -48,9 +48,9 @@ std::array<Color, 2> ProgressiveRadiosity::lightIrradiance(const Element& e, std
     std::array<Color, 2> E;
     if (scene_.lights().empty()) return E;
     for (Side side : kBothSides)
-        E[sideIndex(side)] = LightIrradiance::at(
-            scene_, e.surfacePoint, e.surfaceNormal, side == Side::Front ? e.normal : -e.normal,
-            kAreaLightSamples, hashValues(key, sideIndex(side)), rayCount);
+        E[sideIndex(side)] =
+            LightIrradiance::at(scene_, e.surfacePoint, e.surfaceNormal, e.surfaceSideNormal(side),
+                                kAreaLightSamples, hashValues(key, sideIndex(side)), rayCount);
     return E;
 }
 
