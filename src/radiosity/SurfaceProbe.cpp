@@ -3,6 +3,7 @@
 #include "geometry/Shape.h"
 #include "materials/Bsdf.h"
 #include "materials/Material.h"
+#include "radiosity/TriangleQuadrature.h"
 
 namespace lancer {
 
@@ -30,13 +31,9 @@ void SurfaceProbe::place(const Patch& patch, const std::array<Vec3, 3>& corners,
 
 template <typename OfHit>
 Color SurfaceProbe::average(const Patch& patch, const std::array<Vec3, 3>& corners, OfHit ofHit) {
-    constexpr float kNear = 4.0f / 6, kFar = 1.0f / 6;
-    const std::array<Vec3, 4> points{
-        (corners[0] + corners[1] + corners[2]) / 3.0f,
-        kNear * corners[0] + kFar * (corners[1] + corners[2]),
-        kNear * corners[1] + kFar * (corners[2] + corners[0]),
-        kNear * corners[2] + kFar * (corners[0] + corners[1]),
-    };
+    const std::array<Vec3, 3> quadrature = triangleQuadraturePoints(corners);
+    const std::array<Vec3, 4> points{(corners[0] + corners[1] + corners[2]) / 3.0f, quadrature[0],
+                                     quadrature[1], quadrature[2]};
     Color sum;
     for (const Vec3& p : points) {
         std::optional<Hit> hit = at(patch, p);
