@@ -142,7 +142,7 @@ TEST(HierarchicalClusteringTest, DimClustersNearEachOtherAreLinkedAsClusters) {
     // light, counted with a relative error of kNearSpread (24), is below the threshold; with 64 it
     // hardly ever was, and every such pair was refined into links between elements. Measured:
     // 162,922 links (241,786 with 64; the 10k-triangle knot of bench/radiosity_scaling.py 14.9
-    // million -> 12.2 million, the 200k knot 58 million -> 34 million).
+    // million -> 12.2 million, the 200k knot 58.7 million -> 32.2 million).
     Scene scene = loadScene(
         R"({"type": "torus", "major_radius": 0.25, "minor_radius": 0.1, "material": "white"})",
         R"(, "lights": [{"type": "quad", "corner": [-0.5, 1, -0.5], "edge1": [1, 0, 0],
