@@ -729,8 +729,8 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
     checkKeys(
         node, "\"radiosity\"",
         {"method", "patch_size", "element_size", "threshold", "max_shots", "subdivision_levels",
-         "subdivision_tolerance", "visibility_rays", "refinement_tolerance", "clusters",
-         "glossy_samples", "final_gather", "direct_samples"});
+         "subdivision_tolerance", "visibility_rays", "refined_visibility_rays",
+         "refinement_tolerance", "clusters", "glossy_samples", "final_gather", "direct_samples"});
     RadiositySettings& r = scene_.settings().radiosity;
     if (node.has("method"))
         r.method =
@@ -761,6 +761,7 @@ void SceneLoader::Reader::loadRadiosity(const Node& node) {
             fail(node[key], "\"" + std::string(key) + "\" must be at most " + std::to_string(most));
     };
     readCount("visibility_rays", 1, 1024, r.visibilityRays);
+    readCount("refined_visibility_rays", 1, 1024, r.refinedVisibilityRays);
     readCount("final_gather", 0, 4096, r.finalGather);
     readCount("glossy_samples", 0, 4096, r.glossySamples);
     readCount("direct_samples", 0, 4096, r.directSamples);

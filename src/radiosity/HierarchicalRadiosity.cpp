@@ -18,6 +18,7 @@
 #include "sampling/StratifiedPoint.h"
 #include "scene/Scene.h"
 #include "scene/ShadowRays.h"
+#include "util/FreedMemory.h"
 #include "util/ParallelFor.h"
 
 namespace lancer {
@@ -122,9 +123,9 @@ HierarchicalRadiosity::HierarchicalRadiosity(const Scene& scene)
     RadiositySettings roots = settings_;
     roots.patchSize = roots.elementSize = patchSize_;
     mesh_ = PatchMesher(scene, roots).mesh();
-    fingerprint_ =
-        hashValues(mesh_.fingerprint(scene, settings_), 0x4852u,  // "HR"
-                   std::bit_cast<std::uint32_t>(settings_.refinementTolerance), settings_.clusters);
+    fingerprint_ = hashValues(mesh_.fingerprint(scene, settings_), 0x4852u,  // "HR"
+                              std::bit_cast<std::uint32_t>(settings_.refinementTolerance),
+                              settings_.clusters, settings_.refinedVisibilityRays);
     if (scene.hasGlossyMaterial() && settings_.glossySamples > 0)
         glossy_.emplace(scene, settings_.glossySamples);
     for (const Patch& p : mesh_.patches)
@@ -293,11 +294,13 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
             d.split = choice;
             return d;
         }
+        const int rays = brightSource                           ? 4 * settings_.visibilityRays
+                         : (c.seenWhole >> sideIndex(side)) & 1 ? settings_.refinedVisibilityRays
+                                                                : settings_.visibilityRays;
         link.visibility = formFactor_.areaVisibility(
             receiver, receiverCorners, mesh_.patches[receiver.patch].curved, side, sourceCorners,
-            sourcePatch, sourceSide,
-            brightSource ? 4 * settings_.visibilityRays : settings_.visibilityRays,
-            hashValues(c.receiver, c.source, sideIndex(side)), rayCount);
+            sourcePatch, sourceSide, rays, hashValues(c.receiver, c.source, sideIndex(side)),
+            rayCount);
         if (choice != Element::kNone && linkError(c.receiver, link) > epsilon_) {
             d.split = choice;
             return d;
@@ -458,8 +461,10 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
     d.split = Element::kNone;
     // Nothing of the source faces the receiver (one plane): nothing to link.
     if (unoccluded.isBlack() && deliveredAt(c.source, receiver.center, true).isBlack()) return d;
-    link.visibility = clusterVisibility(c.receiver, c.source, settings_.visibilityRays,
-                                        hashValues(c.receiver, c.source), rayCount);
+    link.visibility = clusterVisibility(
+        c.receiver, c.source,
+        c.seenWhole != 0 ? settings_.refinedVisibilityRays : settings_.visibilityRays,
+        hashValues(c.receiver, c.source), rayCount);
     if (clusterLinkError(link, unoccluded) > epsilon_) {
         d.split = clusterSplitChoice(c.receiver, c.source);
         return d;
@@ -564,15 +569,15 @@ void HierarchicalRadiosity::apply(const Candidate& c, const Decision& d,
                 for (std::uint32_t other : children)
                     next.push_back({child, other});
             else
-                next.push_back(d.split == c.receiver ? Candidate{child, c.source}
-                                                     : Candidate{c.receiver, child});
+                next.push_back(d.split == c.receiver ? Candidate{child, c.source, c.seenWhole}
+                                                     : Candidate{c.receiver, child, c.seenWhole});
         }
         return;
     }
     const std::uint32_t first = split(d.split);
     for (std::uint32_t child = first; child < first + 4; ++child)
-        next.push_back(d.split == c.receiver ? Candidate{child, c.source}
-                                             : Candidate{c.receiver, child});
+        next.push_back(d.split == c.receiver ? Candidate{child, c.source, c.seenWhole}
+                                             : Candidate{c.receiver, child, c.seenWhole});
 }
 
 void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
@@ -621,9 +626,12 @@ void HierarchicalRadiosity::refine(std::vector<Candidate> candidates) {
         prepareElements(before);
         again = mesh_.elements.size() > before;
     }
-    // The lists grew by doubling as the links were made: a third of their memory was spare.
+    // The lists grew by doubling as the links were made: a third of their memory was spare, and
+    // the blocks they left stay resident unless handed back. (Not the cluster links: one array
+    // of hundreds of megabytes, whose spare room was never written and takes no memory, where a
+    // copy of it would take as much again for a moment.)
     parallelFor(links_.size(), 256, [&](std::size_t e) { links_[e].shrink_to_fit(); });
-    clusterLinks_.shrink_to_fit();
+    returnFreedMemory();
     indexClusterLinks();
 }
 
@@ -678,9 +686,14 @@ std::vector<HierarchicalRadiosity::Candidate> HierarchicalRadiosity::relink() {
                 continue;
             }
             // Both sides of one pair make one candidate.
-            if (link.source == previousSource) continue;
+            const auto seenWhole = static_cast<std::uint8_t>(
+                link.visibility == Color(1) ? 1 << sideIndex(link.receiverSide) : 0);
+            if (link.source == previousSource) {
+                candidates.back().seenWhole |= seenWhole;
+                continue;
+            }
             previousSource = link.source;
-            candidates.push_back({r, link.source});
+            candidates.push_back({r, link.source, seenWhole});
         }
         links.resize(kept);
     }
@@ -696,7 +709,9 @@ std::vector<HierarchicalRadiosity::Candidate> HierarchicalRadiosity::relink() {
         std::size_t i = 0;
         std::erase_if(clusterLinks_, [&](const ClusterLink& link) {
             if (!tooMuch[i++]) return false;
-            candidates.push_back({link.receiver, link.source});
+            candidates.push_back(
+                {link.receiver, link.source,
+                 link.visibility == Color(1) ? kSeenWholeBothSides : std::uint8_t{0}});
             return true;
         });
     }
@@ -705,7 +720,16 @@ std::vector<HierarchicalRadiosity::Candidate> HierarchicalRadiosity::relink() {
 
 void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
     std::vector<std::uint32_t> leaves = mesh_.leaves();
-    leafTerms_.assign(resolved ? mesh_.elements.size() : 0, {});
+    if (resolved) {
+        leafTermsFirst_.assign(mesh_.elements.size(), 0);
+        std::uint32_t terms = 0;
+        for (std::uint32_t leaf : leaves) {
+            leafTermsFirst_[leaf] = terms;
+            terms += static_cast<std::uint32_t>(linksGatheredBy(leaf));
+        }
+        leafTermsEnd_ = leafTermsFirst_;
+        leafTerms_.resize(terms);
+    }
     coverage_.assign(mesh_.elements.size(), {0, 0});
     coverageSampled_.assign(mesh_.elements.size(), {0, 0});
     // The cluster links' form factors: what they would bring from sources of radiosity 1. Kept
@@ -726,9 +750,6 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
         const std::array<Vec3, 3> points = triangleQuadraturePoints(mesh_.corners(element));
         for (std::size_t side = 0; side < 2; ++side)
             coverage_[leaf][side] += clusterCoverage[leaf][side].average();
-        // At most a term per link: reserved at once, not grown by doubling (a third of the terms'
-        // memory was spare capacity).
-        if (resolved) leafTerms_[leaf].reserve(linksGatheredBy(leaf));
         for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e]) {
             for (const Link& link : links_[e]) {
                 const std::size_t side = sideIndex(link.receiverSide);
@@ -753,7 +774,8 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
                 unoccluded = std::min(unoccluded, static_cast<double>(source.area / element.area));
                 if (!(unoccluded > 0)) continue;
                 const Color FV = static_cast<float>(unoccluded) * link.visibility;
-                leafTerms_[leaf].push_back({link.source, link.receiverSide, link.sourceSide, FV});
+                leafTerms_[leafTermsEnd_[leaf]++] = {link.source, link.receiverSide,
+                                                     link.sourceSide, FV};
                 coverage_[leaf][side] += FV.average();
                 if (link.partlyVisible())
                     coverageSampled_[leaf][side] += static_cast<float>(unoccluded);
@@ -779,9 +801,11 @@ double HierarchicalRadiosity::iteration(bool resolved) {
         const std::uint32_t leaf = leaves[i];
         std::array<Color, 2> E;
         if (resolved) {
-            for (const LeafTerm& t : leafTerms_[leaf])
+            for (std::uint32_t k = leafTermsFirst_[leaf]; k < leafTermsEnd_[leaf]; ++k) {
+                const LeafTerm& t = leafTerms_[k];
                 E[sideIndex(t.receiverSide)] +=
                     t.formFactor * radiosity_[t.source][sideIndex(t.sourceSide)];
+            }
         } else {
             // Push: what the leaf's ancestors gathered reaches it too.
             for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e])
@@ -1029,6 +1053,12 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
 
     phase = RadiosityProgress::Phase::Gathering;
     if (!carryOn()) return std::nullopt;
+    // The gather below does not read the leaves' terms: their memory (300 MB for the 200k
+    // knot) makes room for its own.
+    // (Swapped out: assigning {} would keep the capacity.)
+    std::vector<LeafTerm>().swap(leafTerms_);
+    std::vector<std::uint32_t>().swap(leafTermsFirst_);
+    std::vector<std::uint32_t>().swap(leafTermsEnd_);
     updateFromClusters();
     VertexSmoothing smoothing(mesh_, mesh_.leaves(), 1e-5 * patchSize_);
     gatherAtVertices(smoothing);

@@ -37,7 +37,10 @@ class VertexSmoothing;
 //     what its ancestors gathered (push), and the radiosities are averaged back up (pull), until
 //     the power still to come (extrapolated from the last two iterations) is below `threshold`
 //     times the power put in;
-//  5. steps 2-4 again with the new radiosities (links refined where they now carry more), until
+//  5. steps 2-4 again with the new radiosities (links refined where they now carry more; where
+//     all of a refined link's rays got through, its ends most likely see each other wholly, and
+//     the links that replace it trace `refined_visibility_rays` rays each, one by default: an
+//     unbiased estimate all the same, a lamp's links excepted), until
 //     nothing more is refined, for at most three passes; the last (the third, or one that finds
 //     fewer than a thousandth of the links to refine) refines and is not examined again (its
 //     links are iterated over in step 6, or here where step 6 is skipped);
@@ -135,7 +138,11 @@ public:
 private:
     struct Candidate {
         std::uint32_t receiver, source;
+        // Per receiver side (bit sideIndex), whether a link between ends that hold these two had
+        // all its rays through: their own link then traces `refined_visibility_rays` rays.
+        std::uint8_t seenWhole = 0;
     };
+    static constexpr std::uint8_t kSeenWholeBothSides = 3;
     // What to do with a candidate link: the links it makes, or which end to split (a node).
     struct Decision {
         std::array<Link, 2> links;
@@ -297,7 +304,10 @@ private:
         Side receiverSide, sourceSide;
         Color formFactor;  // visibility included
     };
-    std::vector<std::vector<LeafTerm>> leafTerms_;
+    // In one array (one allocation, handed back whole when freed): leaf e's are
+    // leafTerms_[leafTermsFirst_[e], leafTermsEnd_[e]), room made for one per link it gathers.
+    std::vector<LeafTerm> leafTerms_;
+    std::vector<std::uint32_t> leafTermsFirst_, leafTermsEnd_;
     std::vector<std::array<float, 2>> coverage_;
     // The part of each leaf's coverage from partly visible links (their unoccluded form factors).
     std::vector<std::array<float, 2>> coverageSampled_;

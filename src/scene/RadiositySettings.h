@@ -16,6 +16,9 @@ struct RadiositySettings {
     int subdivisionLevels = 2;          // how many times an element may be split in four
     float subdivisionTolerance = 0.1f;  // relative jump in irradiance that makes an element split
     int visibilityRays = 4;             // rays per form factor, to points on the shooter
+    // Hierarchical: rays per link refined from a link whose rays all got through (unless its
+    // source is bright, a lamp).
+    int refinedVisibilityRays = 1;
     // Hierarchical: a link whose reflected radiosity may be wrong by more than this fraction of
     // the mean radiosity put in is refined.
     float refinementTolerance = 0.02f;

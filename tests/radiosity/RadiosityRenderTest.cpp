@@ -690,6 +690,8 @@ INSTANTIATE_TEST_SUITE_P(
         KeyErrorCase{"NegativePatchSize", R"({"patch_size": -1})", 29, "greater than 0"},
         KeyErrorCase{"ThresholdOfOne", R"({"threshold": 1})", 28, "below 1"},
         KeyErrorCase{"NoVisibilityRays", R"({"visibility_rays": 0})", 34, "at least 1"},
+        KeyErrorCase{"TooManyRefinedVisibilityRays", R"({"refined_visibility_rays": 2000})", 42,
+                     "at most 1024"},
         KeyErrorCase{"TooManyLevels", R"({"subdivision_levels": 9})", 37, "at most 8"},
         KeyErrorCase{"FractionalShots", R"({"max_shots": 2.5})", 28, "whole number"},
         KeyErrorCase{"NoRefinementTolerance", R"({"refinement_tolerance": 0})", 39,
