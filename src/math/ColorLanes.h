@@ -19,28 +19,26 @@ struct ColorLanes {
 
     std::array<float, kLanes> r{}, g{}, b{};
 
-    void add(std::uint32_t lane, float weight, float cr, float cg, float cb) {
-        r[lane] += weight * cr;
-        g[lane] += weight * cg;
-        b[lane] += weight * cb;
+    // weight x colour added to the lane where `keep`, +0 where not (which leaves the sum as it
+    // was, whatever the terms, infinite or NaN ones too).
+    void addIf(bool keep, std::uint32_t lane, float weight, float cr, float cg, float cb) {
+        r[lane] += keptIf(keep, weight * cr);
+        g[lane] += keptIf(keep, weight * cg);
+        b[lane] += keptIf(keep, weight * cb);
     }
-    // weight x colour added to `ifTrue` where `which`, else to `ifFalse` (+0 to the other). The
-    // product is kept or cleared by a bit mask: a condition here becomes a branch (the compiler
-    // makes x + (c ? y : 0) a conditional add), and a product by 0 would turn an infinite term
-    // into a NaN.
-    static void addToOne(bool which, ColorLanes& ifTrue, ColorLanes& ifFalse, std::uint32_t lane,
-                         float weight, float cr, float cg, float cb) {
-        const std::uint32_t mask = 0u - static_cast<std::uint32_t>(which);
-        const auto keep = [](float x, std::uint32_t bits) {
-            return std::bit_cast<float>(std::bit_cast<std::uint32_t>(x) & bits);
-        };
-        const float r = weight * cr, g = weight * cg, b = weight * cb;
-        ifTrue.r[lane] += keep(r, mask);
-        ifTrue.g[lane] += keep(g, mask);
-        ifTrue.b[lane] += keep(b, mask);
-        ifFalse.r[lane] += keep(r, ~mask);
-        ifFalse.g[lane] += keep(g, ~mask);
-        ifFalse.b[lane] += keep(b, ~mask);
+    // weight x colour added to `ifTrue` where `which`, else to `ifFalse` (+0 to the other), and
+    // to neither where not `keep`. Not a condition: it becomes a branch (the compiler makes
+    // x + (c ? y : 0) a conditional add).
+    static void addToOne(bool keep, bool which, ColorLanes& ifTrue, ColorLanes& ifFalse,
+                         std::uint32_t lane, float weight, float cr, float cg, float cb) {
+        ifTrue.addIf(keep && which, lane, weight, cr, cg, cb);
+        ifFalse.addIf(keep && !which, lane, weight, cr, cg, cb);
+    }
+    // x where `keep`, else +0: by a bit mask, without a branch in the lanes (and +0 for an
+    // infinite or NaN x too, where a product by 0 would give a NaN).
+    static float keptIf(bool keep, float x) {
+        return std::bit_cast<float>(std::bit_cast<std::uint32_t>(x) &
+                                    (0u - static_cast<std::uint32_t>(keep)));
     }
     Color total() const {
         Color sum;
@@ -49,16 +47,20 @@ struct ColorLanes {
         return sum;
     }
 
-    // Calls body(lane, i) for i in [first, last), term i in lane (i - first) % kLanes: whole
-    // groups of kLanes in a loop of fixed length the compiler vectorizes, then the rest.
+    // What arrays read by forEach must hold past their last item.
+    static constexpr std::uint32_t kPadding = kLanes - 1;
+
+    // Calls body(lane, i, inRange) for i from `first` in whole groups of kLanes (a loop of fixed
+    // length the compiler vectorizes), term i in lane (i - first) % kLanes. The last group runs
+    // on past `last` (by at most kPadding) with inRange false, where the body is to add +0
+    // (addIf): that leaves a lane's sum as it was, so the sums are those of the terms in range
+    // alone, while a tail taken a term at a time cost more than the groups before it (a sum over
+    // a few terms is mostly tail).
     template <typename Body>
     static void forEach(std::uint32_t first, std::uint32_t last, Body body) {
-        std::uint32_t i = first;
-        for (; last - i >= kLanes; i += kLanes)
+        for (std::uint32_t i = first; i < last; i += kLanes)
             for (std::uint32_t lane = 0; lane < kLanes; ++lane)
-                body(lane, i + lane);
-        for (std::uint32_t lane = 0; i < last; ++i, ++lane)
-            body(lane, i);
+                body(lane, i + lane, i + lane < last);
     }
 };
 

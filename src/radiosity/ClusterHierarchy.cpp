@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "math/Bounds3.h"
-#include "math/ColorLanes.h"
 
 namespace lancer {
 
@@ -32,6 +31,11 @@ void ClusterHierarchy::MemberShapes::push_back(const Element& e) {
     area.push_back(e.area);
 }
 
+void ClusterHierarchy::MemberShapes::pad() {
+    for (std::vector<float>* v : {&x, &y, &z, &nx, &ny, &nz, &area})
+        v->resize(v->size() + ColorLanes::kPadding, 0.0f);
+}
+
 ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::uint32_t> roots)
     : members_(std::move(roots)) {
     if (members_.size() < 2) {
@@ -46,6 +50,7 @@ ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::u
         areaBefore_[i + 1] = areaBefore_[i] + e.area;
         memberShapes_.push_back(e);
     }
+    memberShapes_.pad();
 }
 
 std::uint32_t ClusterHierarchy::build(const RadiosityMesh& mesh, std::uint32_t first,
@@ -108,15 +113,16 @@ LANCER_ALWAYS_INLINE Color ClusterHierarchy::memberSum(std::uint32_t node, const
     const ColorArrays& front = radiosities[sideIndex(Side::Front)];
     const ColorArrays& back = radiosities[sideIndex(Side::Back)];
     ColorLanes sum;
-    ColorLanes::forEach(
-        c.firstMember, c.firstMember + c.memberCount, [&](std::uint32_t lane, std::uint32_t i) {
-            const Term t = term(at.x - m.x[i], at.y - m.y[i], at.z - m.z[i], m.nx[i], m.ny[i],
-                                m.nz[i], m.area[i]);
-            // Both sides read, then one chosen: no branch in the lanes.
-            const float fr = front.r[i], fg = front.g[i], fb = front.b[i];
-            const float br = back.r[i], bg = back.g[i], bb = back.b[i];
-            sum.add(lane, t.weight, t.front ? fr : br, t.front ? fg : bg, t.front ? fb : bb);
-        });
+    ColorLanes::forEach(c.firstMember, c.firstMember + c.memberCount,
+                        [&](std::uint32_t lane, std::uint32_t i, bool inRange) {
+                            const Term t = term(at.x - m.x[i], at.y - m.y[i], at.z - m.z[i],
+                                                m.nx[i], m.ny[i], m.nz[i], m.area[i]);
+                            // Both sides read, then one chosen: no branch in the lanes.
+                            const float fr = front.r[i], fg = front.g[i], fb = front.b[i];
+                            const float br = back.r[i], bg = back.g[i], bb = back.b[i];
+                            sum.addIf(inRange, lane, t.weight, t.front ? fr : br, t.front ? fg : bg,
+                                      t.front ? fb : bb);
+                        });
     return sum.total();
 }
 

@@ -10,6 +10,7 @@
 
 #include "math/Color.h"
 #include "math/ColorArrays.h"
+#include "math/ColorLanes.h"
 #include "math/Vec2.h"
 #include "math/Vec3.h"
 #include "radiosity/Element.h"
@@ -76,13 +77,14 @@ public:
     }
 
     // The members' radiosities in the members' order, per side (front, back): what a cluster's
-    // irradianceAt reads, in a row, filled from the elements' by fillMemberRadiosities.
+    // irradianceAt reads, in a row, filled from the elements' by fillMemberRadiosities (with
+    // ColorLanes::kPadding zeros after the last).
     using MemberRadiosities = std::array<ColorArrays, 2>;
     template <typename RadiosityOf>
     void fillMemberRadiosities(MemberRadiosities& into, RadiosityOf radiosityOf) const {
         for (Side side : kBothSides) {
             ColorArrays& arrays = into[sideIndex(side)];
-            arrays.resize(members_.size());
+            arrays.resize(members_.size() + ColorLanes::kPadding);
             for (std::size_t i = 0; i < members_.size(); ++i)
                 arrays.set(i, radiosityOf(members_[i], side));
         }
@@ -131,6 +133,8 @@ private:
         std::vector<float> nx, ny, nz;  // normal
         std::vector<float> area;
         void push_back(const Element& e);
+        // Appends the zeros ColorLanes::forEach reads past the last member.
+        void pad();
     };
 
     // One term of irradianceAt: its weight A |cos| / (pi d^2) (none at the element's centroid),

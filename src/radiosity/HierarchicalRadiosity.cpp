@@ -482,11 +482,11 @@ LANCER_ALWAYS_INLINE std::array<Color, 2> HierarchicalRadiosity::linkSums(
     const Vec3& n = at.normal;
     ColorLanes front, back;
     const auto take = [&](std::uint32_t first, std::uint32_t last) {
-        ColorLanes::forEach(first, last, [&](std::uint32_t lane, std::uint32_t l) {
+        ColorLanes::forEach(first, last, [&](std::uint32_t lane, std::uint32_t l, bool inRange) {
             const Share share = shareToward(links.x[l] - c.x, links.y[l] - c.y, links.z[l] - c.z, n,
                                             links.distance2[l]);
-            ColorLanes::addToOne(share.front, front, back, lane, share.fraction, perLink.r[l],
-                                 perLink.g[l], perLink.b[l]);
+            ColorLanes::addToOne(inRange, share.front, front, back, lane, share.fraction,
+                                 perLink.r[l], perLink.g[l], perLink.b[l]);
         });
     };
     std::uint32_t root = leaf;
@@ -547,7 +547,7 @@ std::vector<std::array<Color, 2>> HierarchicalRadiosity::gatherThroughClusters(
 
 void HierarchicalRadiosity::updateFromClusters() {
     if (clusters_.empty()) return;
-    clusterTransfers_.resize(clusterLinks_.size());
+    clusterTransfers_.resize(clusterLinks_.size() + ColorLanes::kPadding);
     parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
         clusterTransfers_.set(linkPosition_[i], clusterTransfer(clusterLinks_[i]));
     });
@@ -651,7 +651,7 @@ void HierarchicalRadiosity::indexClusterLinks() {
     clusterReceives_.assign(next.begin() + static_cast<std::ptrdiff_t>(elements), next.end());
     linkPosition_.resize(count);
     for (std::vector<float>* v : {&received_.x, &received_.y, &received_.z, &received_.distance2})
-        v->resize(count);
+        v->resize(count + ColorLanes::kPadding);
     for (std::size_t i = 0; i < count; ++i) {
         const ClusterLink& link = clusterLinks_[i];
         const std::uint32_t at = next[slot(link.receiver)]++;
@@ -736,7 +736,7 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
     // where their transfers are (the next iteration makes those anew), not in arrays of their own
     // beside the leaf terms: the 200k knot's largest moment.
     ColorArrays& unit = clusterTransfers_;
-    unit.resize(clusterLinks_.size());
+    unit.resize(clusterLinks_.size() + ColorLanes::kPadding);
     parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
         const ClusterLink& link = clusterLinks_[i];
         unit.set(linkPosition_[i],
@@ -918,7 +918,7 @@ void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
         ClusterHierarchy::MemberRadiosities emitted;
         clusters_.fillMemberRadiosities(
             emitted, [&](std::uint32_t e, Side side) { return emittedDirectly(e, side); });
-        directTransfers.resize(clusterLinks_.size());
+        directTransfers.resize(clusterLinks_.size() + ColorLanes::kPadding);
         parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
             const ClusterLink& link = clusterLinks_[i];
             const Vec3 centre = clusters_.center(mesh_, link.receiver);

@@ -13,30 +13,48 @@
 namespace lancer {
 namespace {
 
-TEST(ColorLanesTest, ForEachVisitsEveryIndexOnceInItsLane) {
+TEST(ColorLanesTest, ForEachVisitsEveryIndexOnceInItsLaneAndThePaddingOutOfRange) {
     for (std::uint32_t first : {0u, 3u}) {
         for (std::uint32_t count : {0u, 1u, 7u, 8u, 9u, 16u, 21u}) {
-            std::vector<int> visits(first + count, 0);
-            ColorLanes::forEach(first, first + count, [&](std::uint32_t lane, std::uint32_t i) {
-                EXPECT_EQ(lane, (i - first) % ColorLanes::kLanes) << first << " " << count;
-                ++visits[i];
-            });
-            for (std::uint32_t i = 0; i < first + count; ++i)
-                EXPECT_EQ(visits[i], i >= first ? 1 : 0) << i;
+            const std::uint32_t last = first + count;
+            std::vector<int> visits(last + ColorLanes::kPadding, 0);
+            ColorLanes::forEach(
+                first, last, [&](std::uint32_t lane, std::uint32_t i, bool inRange) {
+                    EXPECT_EQ(lane, (i - first) % ColorLanes::kLanes) << first << " " << count;
+                    EXPECT_EQ(inRange, i < last) << i;
+                    ++visits[i];
+                });
+            // Whole groups of lanes: the indices in range, then up to the group's end.
+            const std::uint32_t end =
+                first + (count + ColorLanes::kPadding) / ColorLanes::kLanes * ColorLanes::kLanes;
+            for (std::uint32_t i = 0; i < visits.size(); ++i)
+                EXPECT_EQ(visits[i], i >= first && i < end ? 1 : 0) << first << " " << count;
         }
     }
 }
 
-TEST(ColorLanesTest, TheTotalAddsEachLanesSumInLaneOrder) {
+TEST(ColorLanesTest, TheTotalAddsEachLanesSumInLaneOrderAndNothingPastTheLast) {
     // Terms whose sum depends on the order of the additions: 1e8 and -1e8 cancel only when they
     // meet before the small terms are rounded away.
     std::vector<float> terms(19);
     for (std::size_t i = 0; i < terms.size(); ++i)
         terms[i] = (i % 3 == 0) ? 1e8f : (i % 3 == 1 ? -1e8f : 0.75f + static_cast<float>(i));
+    // What forEach reads past the last term is not added, whatever it holds.
+    const std::vector<float> padding{std::numeric_limits<float>::infinity(),
+                                     std::numeric_limits<float>::quiet_NaN(),
+                                     1e30f,
+                                     -1,
+                                     2,
+                                     3,
+                                     4};
+    ASSERT_EQ(padding.size(), ColorLanes::kPadding);
+    std::vector<float> padded = terms;
+    padded.insert(padded.end(), padding.begin(), padding.end());
     ColorLanes sum;
-    ColorLanes::forEach(
-        0, static_cast<std::uint32_t>(terms.size()),
-        [&](std::uint32_t lane, std::uint32_t i) { sum.add(lane, terms[i], 1, 2, 0.5f); });
+    ColorLanes::forEach(0, static_cast<std::uint32_t>(terms.size()),
+                        [&](std::uint32_t lane, std::uint32_t i, bool inRange) {
+                            sum.addIf(inRange, lane, padded[i], 1, 2, 0.5f);
+                        });
     // The same additions by hand: lane by lane, then the lanes in order.
     float lanes[ColorLanes::kLanes] = {};
     for (std::size_t i = 0; i < terms.size(); ++i)
@@ -51,8 +69,11 @@ TEST(ColorLanesTest, TheTotalAddsEachLanesSumInLaneOrder) {
 TEST(ColorLanesTest, AddToOneLeavesTheOtherSumUntouchedEvenByAnInfiniteTerm) {
     ColorLanes front, back;
     const float inf = std::numeric_limits<float>::infinity();
-    ColorLanes::addToOne(true, front, back, 2, 0.5f, 2, inf, 4);
-    ColorLanes::addToOne(false, front, back, 2, 0.25f, 8, 1, 0);
+    ColorLanes::addToOne(true, true, front, back, 2, 0.5f, 2, inf, 4);
+    ColorLanes::addToOne(true, false, front, back, 2, 0.25f, 8, 1, 0);
+    // Out of range: to neither.
+    ColorLanes::addToOne(false, true, front, back, 2, inf, 1, 1, 1);
+    ColorLanes::addToOne(false, false, front, back, 2, inf, 1, 1, 1);
     EXPECT_EQ(front.total().r, 1.0f);
     EXPECT_EQ(front.total().g, inf);
     EXPECT_EQ(front.total().b, 2.0f);
