@@ -100,10 +100,7 @@ ClusterHierarchy::Extent ClusterHierarchy::extent(const RadiosityMesh& mesh,
                                                   std::uint32_t node) const {
     if (isCluster(node)) return {cluster(node).center, cluster(node).radius};
     const Element& e = mesh.elements[node];
-    float radius = 0;
-    for (const Vec3& corner : mesh.corners(e))
-        radius = std::max(radius, length(corner - e.centroid));
-    return {e.centroid, radius};
+    return {e.centroid, e.radius};
 }
 
 LANCER_ALWAYS_INLINE Color ClusterHierarchy::memberSum(std::uint32_t node, const Vec3& at,

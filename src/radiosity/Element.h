@@ -20,6 +20,11 @@ struct Element {
     std::uint32_t firstChild = kNone;  // the first of 4 children, or kNone for a leaf
     int level = 0;                     // 0 for the elements cut from a patch
     float area = 0;
+    // Its longest edge, and the distance from its centroid to its farthest corner (the radius of
+    // a bounding sphere): what the refinement reads of most elements it judges, kept here, near
+    // the centroid, rather than read from the three corners.
+    float longestEdge = 0;
+    float radius = 0;
     Vec3 centroid;  // on the flat triangle
     Vec3 normal;    // unit, the patch's
     // The centroid moved onto the shape's true surface, where rays start, and the surface's

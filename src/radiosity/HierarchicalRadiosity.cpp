@@ -92,10 +92,6 @@ constexpr float kNearSpread = 24;
 constexpr int kMaxRefinementPasses = 3;
 constexpr std::size_t kFewCandidates = 1000;
 
-float longestEdge(const std::array<Vec3, 3>& t) {
-    return std::max({length(t[1] - t[0]), length(t[2] - t[1]), length(t[0] - t[2])});
-}
-
 double square(float x) {
     return static_cast<double>(x) * x;
 }
@@ -175,7 +171,7 @@ std::uint32_t HierarchicalRadiosity::split(std::uint32_t element) {
 }
 
 bool HierarchicalRadiosity::splittable(std::uint32_t element) const {
-    return splittableAt(longestEdge(mesh_.corners(mesh_.elements[element])));
+    return splittableAt(mesh_.elements[element].longestEdge);
 }
 
 std::uint32_t HierarchicalRadiosity::splitChoice(std::uint32_t receiver,
@@ -184,8 +180,8 @@ std::uint32_t HierarchicalRadiosity::splitChoice(std::uint32_t receiver,
     // enough to cross a shadow) came last, the lamp split before it into pieces whose links each
     // carried too little to split it, and it stayed whole, its light interpolated from its lit
     // end across the shadow.
-    const float r = longestEdge(mesh_.corners(mesh_.elements[receiver]));
-    const float s = longestEdge(mesh_.corners(mesh_.elements[source]));
+    const float r = mesh_.elements[receiver].longestEdge;
+    const float s = mesh_.elements[source].longestEdge;
     if (splittableAt(r) && splittableAt(s)) return r >= s ? receiver : source;
     return splittableAt(r) ? receiver : splittableAt(s) ? source : Element::kNone;
 }
@@ -248,7 +244,7 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
     if (height == 0 || !std::isfinite(height)) return d;
     const Side sourceSide = height > 0 ? Side::Front : Side::Back;
     const std::array<Vec3, 3> points = triangleQuadraturePoints(receiverCorners);
-    const double sourceEdge2 = square(longestEdge(sourceCorners));
+    const double sourceEdge2 = square(source.longestEdge);
     // Links from strong sources (the lamps) trace more rays: their shadows are what shows.
     const bool brightSource = radiosity_[c.source][sideIndex(sourceSide)].average() * source.area >=
                               kBrightSource * initialPower_;
@@ -761,7 +757,7 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
                 const Element& source = mesh_.elements[link.source];
                 const std::array<Vec3, 3> corners = mesh_.corners(source);
                 const Vec3d n(link.receiverSide == Side::Front ? element.normal : -element.normal);
-                const double edge2 = square(longestEdge(corners));
+                const double edge2 = square(source.longestEdge);
                 const auto F = [&](const Vec3& p) {
                     return FormFactor::pointToSideOfTriangleApprox(
                         Vec3d(p), n, corners, source.normal, link.sourceSide, source.area, edge2);
@@ -872,7 +868,7 @@ HierarchicalRadiosity::Brought HierarchicalRadiosity::gatherFrom(const Element& 
     const Vec3 n = link.receiverSide == Side::Front ? at.normal : -at.normal;
     const double unoccluded = FormFactor::pointToSideOfTriangleApprox(
         Vec3d(at.centroid), Vec3d(n), corners, element.normal, link.sourceSide, element.area,
-        square(longestEdge(corners)));
+        square(element.longestEdge));
     if (!(unoccluded > 0)) return {};
     // A source seen large is gathered from its children: its radiosity varies over it (darker
     // towards the corners), which its average would not show.

@@ -26,10 +26,6 @@ bool isMeshed(const Material& m) {
     return m.reflectsDiffusely() || !m.emission().isBlack();
 }
 
-float longestEdge(const std::array<Vec3, 3>& t) {
-    return std::max({length(t[1] - t[0]), length(t[2] - t[1]), length(t[0] - t[2])});
-}
-
 int piecesFor(float length, float size) {
     return std::clamp(static_cast<int>(std::ceil(length / size)), 1, 4096);
 }
@@ -230,8 +226,8 @@ void PatchMesher::addSurfaceTriangle(RadiosityMesh& mesh, const std::array<Vec3,
     const Vec3 crossed = cross(corners[1] - corners[0], corners[2] - corners[0]);
     if (!(lengthSquared(crossed) > 0) || !isFinite(crossed)) return;
     const Material& material = *source.material;
-    for (const auto& piece :
-         RadiosityMesh::subdivide(corners, piecesFor(longestEdge(corners), patchSize_))) {
+    for (const auto& piece : RadiosityMesh::subdivide(
+             corners, piecesFor(RadiosityMesh::longestEdge(corners), patchSize_))) {
         Patch patch;
         patch.corners = piece;
         const Vec3 n = cross(piece[1] - piece[0], piece[2] - piece[0]);
@@ -251,8 +247,8 @@ void PatchMesher::addSurfaceTriangle(RadiosityMesh& mesh, const std::array<Vec3,
         const auto index = static_cast<std::uint32_t>(mesh.patches.size());
         patch.firstElement = static_cast<std::uint32_t>(mesh.elements.size());
         mesh.patches.push_back(patch);
-        for (const auto& part :
-             RadiosityMesh::subdivide(piece, piecesFor(longestEdge(piece), elementSize_))) {
+        for (const auto& part : RadiosityMesh::subdivide(
+                 piece, piecesFor(RadiosityMesh::longestEdge(piece), elementSize_))) {
             const std::uint32_t e = mesh.addElement(index, part, 0);
             SurfaceProbe::place(mesh.patches[index], part, mesh.elements[e]);
         }

@@ -45,6 +45,10 @@ std::vector<std::array<Vec3, 3>> RadiosityMesh::subdivide(const std::array<Vec3,
     return pieces;
 }
 
+float RadiosityMesh::longestEdge(const std::array<Vec3, 3>& t) {
+    return std::max({length(t[1] - t[0]), length(t[2] - t[1]), length(t[0] - t[2])});
+}
+
 std::uint32_t RadiosityMesh::addElement(std::uint32_t patch, const std::array<Vec3, 3>& corners,
                                         int level) {
     Element e;
@@ -56,6 +60,9 @@ std::uint32_t RadiosityMesh::addElement(std::uint32_t patch, const std::array<Ve
     e.level = level;
     e.area = 0.5f * length(cross(corners[1] - corners[0], corners[2] - corners[0]));
     e.centroid = (corners[0] + corners[1] + corners[2]) / 3.0f;
+    e.longestEdge = longestEdge(corners);
+    for (const Vec3& corner : corners)
+        e.radius = std::max(e.radius, length(corner - e.centroid));
     e.normal = patches[patch].normal;
     e.surfacePoint = e.centroid;
     e.surfaceNormal = e.normal;

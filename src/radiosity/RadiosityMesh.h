@@ -23,6 +23,8 @@ public:
     // The triangle cut into n^2 triangles like it (n pieces per edge), oriented like it.
     static std::vector<std::array<Vec3, 3>> subdivide(const std::array<Vec3, 3>& triangle, int n);
 
+    static float longestEdge(const std::array<Vec3, 3>& triangle);
+
     // Appends an element of `patch` over `corners` (its surface point and reflectance are left
     // for the caller) and returns its index.
     std::uint32_t addElement(std::uint32_t patch, const std::array<Vec3, 3>& corners, int level);
