@@ -15,6 +15,16 @@ Vec3 uniformPointOn(const std::array<Vec3, 3>& t, const Vec2& uv) {
     return (1 - su) * t[0] + su * (1 - uv.y) * t[1] + su * uv.y * t[2];
 }
 
+// A point of an element (its corners, normal and patch) for ClusterHierarchy::sample.
+ClusterHierarchy::SurfacePoint pointOn(const std::array<Vec3, 3>& corners, const Vec3& normal,
+                                       const Patch& patch, const Vec3& towards, const Vec2& u) {
+    ClusterHierarchy::SurfacePoint s;
+    s.p = uniformPointOn(corners, u);
+    s.n = dot(normal, towards - s.p) >= 0 ? normal : -normal;
+    s.patch = &patch;
+    return s;
+}
+
 // How many members after the one drawn a cluster's sample looks through for one facing the
 // other end.
 constexpr std::uint32_t kFacingSearch = 8;
@@ -29,6 +39,8 @@ void ClusterHierarchy::MemberShapes::push_back(const Element& e) {
     ny.push_back(e.normal.y);
     nz.push_back(e.normal.z);
     area.push_back(e.area);
+    corners.push_back(e.corners);
+    patch.push_back(e.patch);
 }
 
 void ClusterHierarchy::MemberShapes::pad() {
@@ -67,7 +79,7 @@ std::uint32_t ClusterHierarchy::build(const RadiosityMesh& mesh, std::uint32_t f
     float area = 0, reflectance = 0;
     for (std::uint32_t i = first; i < first + count; ++i) {
         const Element& e = mesh.elements[members_[i]];
-        for (const Vec3& corner : mesh.corners(e))
+        for (const Vec3& corner : e.corners)
             box = merge(box, corner);
         centroids = merge(centroids, e.centroid);
         area += e.area;
@@ -148,37 +160,34 @@ Color ClusterHierarchy::irradianceAt(const Element& e, const Vec3& at,
 ClusterHierarchy::SurfacePoint ClusterHierarchy::sample(const RadiosityMesh& mesh,
                                                         std::uint32_t node, const Vec3& towards,
                                                         Vec2 u) const {
-    std::uint32_t element = node;
-    if (isCluster(node)) {
-        // The member under u.x along the members' areas laid end to end, u.x then rescaled
-        // within it.
-        const Cluster& c = cluster(node);
-        const double start = areaBefore_[c.firstMember];
-        const double target = start + u.x * (areaBefore_[c.firstMember + c.memberCount] - start);
-        const auto from = areaBefore_.begin() + c.firstMember + 1;
-        const auto found = std::upper_bound(from, from + c.memberCount - 1, target);
-        auto i = static_cast<std::uint32_t>(found - areaBefore_.begin()) - 1;
-        const double width = areaBefore_[i + 1] - areaBefore_[i];
-        u.x = width > 0 ? std::clamp(static_cast<float>((target - areaBefore_[i]) / width), 0.0f,
-                                     0.99999994f)
-                        : 0.5f;
-        for (std::uint32_t k = 0; k < std::min(kFacingSearch, c.memberCount); ++k) {
-            const std::uint32_t j = c.firstMember + (i - c.firstMember + k) % c.memberCount;
-            const MemberShapes& m = memberShapes_;
-            const Vec3 normal(m.nx[j], m.ny[j], m.nz[j]), centroid(m.x[j], m.y[j], m.z[j]);
-            if (dot(normal, towards - centroid) > 0) {
-                i = j;
-                break;
-            }
-        }
-        element = members_[i];
+    if (!isCluster(node)) {
+        const Element& e = mesh.elements[node];
+        return pointOn(e.corners, e.normal, mesh.patches[e.patch], towards, u);
     }
-    const Element& e = mesh.elements[element];
-    SurfacePoint s;
-    s.p = uniformPointOn(mesh.corners(e), u);
-    s.n = dot(e.normal, towards - s.p) >= 0 ? e.normal : -e.normal;
-    s.patch = &mesh.patches[e.patch];
-    return s;
+    // The member under u.x along the members' areas laid end to end, u.x then rescaled within it.
+    const Cluster& c = cluster(node);
+    const double start = areaBefore_[c.firstMember];
+    const double target = start + u.x * (areaBefore_[c.firstMember + c.memberCount] - start);
+    const auto from = areaBefore_.begin() + c.firstMember + 1;
+    const auto found = std::upper_bound(from, from + c.memberCount - 1, target);
+    auto i = static_cast<std::uint32_t>(found - areaBefore_.begin()) - 1;
+    const double width = areaBefore_[i + 1] - areaBefore_[i];
+    u.x = width > 0
+              ? std::clamp(static_cast<float>((target - areaBefore_[i]) / width), 0.0f, 0.99999994f)
+              : 0.5f;
+    const MemberShapes& m = memberShapes_;
+    for (std::uint32_t k = 0; k < std::min(kFacingSearch, c.memberCount); ++k) {
+        const std::uint32_t j = c.firstMember + (i - c.firstMember + k) % c.memberCount;
+        const Vec3 normal(m.nx[j], m.ny[j], m.nz[j]), centroid(m.x[j], m.y[j], m.z[j]);
+        if (dot(normal, towards - centroid) > 0) {
+            i = j;
+            break;
+        }
+    }
+    // The member's corners, normal and patch from the members' arrays, not from its Element:
+    // those are near what the search read, where the Element is a cache miss of its own.
+    return pointOn(m.corners[i], Vec3(m.nx[i], m.ny[i], m.nz[i]), mesh.patches[m.patch[i]], towards,
+                   u);
 }
 
 }  // namespace lancer

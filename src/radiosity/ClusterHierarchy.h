@@ -125,13 +125,15 @@ public:
                         Vec2 u) const;
 
 private:
-    // What irradianceAt (and sample's search for a facing member) reads of the members, in their
-    // order and one array per coordinate: a sum over a large cluster reads these in a row,
-    // several members at a time, instead of 160-byte Elements here and there.
+    // What irradianceAt and sample read of the members, in their order and (what the sums read)
+    // one array per coordinate: a sum over a large cluster reads these in a row, several members
+    // at a time, instead of 192-byte Elements here and there.
     struct MemberShapes {
         std::vector<float> x, y, z;     // centroid
         std::vector<float> nx, ny, nz;  // normal
         std::vector<float> area;
+        std::vector<std::array<Vec3, 3>> corners;
+        std::vector<std::uint32_t> patch;
         void push_back(const Element& e);
         // Appends the zeros ColorLanes::forEach reads past the last member.
         void pad();

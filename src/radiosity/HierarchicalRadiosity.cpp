@@ -192,7 +192,7 @@ void HierarchicalRadiosity::prepareElements(std::size_t first) {
         const auto e = static_cast<std::uint32_t>(first + i);
         Element& element = mesh_.elements[e];
         const Patch& patch = mesh_.patches[element.patch];
-        const std::array<Vec3, 3> corners = mesh_.corners(element);
+        const std::array<Vec3, 3> corners = element.corners;
         SurfaceProbe::place(patch, corners, element);
         fromLights_[e] = {};
         lightSpread_[e] = 0;
@@ -236,8 +236,8 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decide(const Candidate& c
     const Element& source = mesh_.elements[c.source];
     if (receiver.patch == source.patch) return d;  // flat: it cannot see itself
     const Patch& sourcePatch = mesh_.patches[source.patch];
-    const std::array<Vec3, 3> sourceCorners = mesh_.corners(source);
-    const std::array<Vec3, 3> receiverCorners = mesh_.corners(receiver);
+    const std::array<Vec3, 3> sourceCorners = source.corners;
+    const std::array<Vec3, 3> receiverCorners = receiver.corners;
     // The source's side that faces the receiver's centroid; receiver points behind it see none
     // of it.
     const float height = dot(source.normal, receiver.centroid - sourceCorners[0]);
@@ -743,7 +743,7 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
     parallelFor(leaves.size(), 8, [&](std::size_t i) {
         const std::uint32_t leaf = leaves[i];
         const Element& element = mesh_.elements[leaf];
-        const std::array<Vec3, 3> points = triangleQuadraturePoints(mesh_.corners(element));
+        const std::array<Vec3, 3> points = triangleQuadraturePoints(element.corners);
         for (std::size_t side = 0; side < 2; ++side)
             coverage_[leaf][side] += clusterCoverage[leaf][side].average();
         for (std::uint32_t e = leaf; e != Element::kNone; e = parent_[e]) {
@@ -755,7 +755,7 @@ void HierarchicalRadiosity::resolveAtLeaves(bool resolved) {
                     continue;
                 }
                 const Element& source = mesh_.elements[link.source];
-                const std::array<Vec3, 3> corners = mesh_.corners(source);
+                const std::array<Vec3, 3> corners = source.corners;
                 const Vec3d n(link.receiverSide == Side::Front ? element.normal : -element.normal);
                 const double edge2 = square(source.longestEdge);
                 const auto F = [&](const Vec3& p) {
@@ -864,7 +864,7 @@ HierarchicalRadiosity::Brought HierarchicalRadiosity::gatherFrom(const Element& 
                                                                  std::uint64_t key,
                                                                  std::uint64_t& rayCount) const {
     const Element& element = mesh_.elements[source];
-    const std::array<Vec3, 3> corners = mesh_.corners(element);
+    const std::array<Vec3, 3> corners = element.corners;
     const Vec3 n = link.receiverSide == Side::Front ? at.normal : -at.normal;
     const double unoccluded = FormFactor::pointToSideOfTriangleApprox(
         Vec3d(at.centroid), Vec3d(n), corners, element.normal, link.sourceSide, element.area,

@@ -102,8 +102,8 @@ void ProgressiveRadiosity::shoot(std::uint32_t shooter, Side side, int rays,
             for (Side r : kBothSides)
                 for (std::size_t k = 0; k < n; ++k)
                     formFactors[(i * 2 + sideIndex(r)) * n + k] = formFactor_.elementToTriangle(
-                        element, r, mesh_.corners(mesh_.elements[shots[k].element]), patch, side,
-                        raysEach, hashValues(shots[k].element, s, e, sideIndex(r)), rayCount);
+                        element, r, mesh_.elements[shots[k].element].corners, patch, side, raysEach,
+                        hashValues(shots[k].element, s, e, sideIndex(r)), rayCount);
         });
     // A form factor taken at the receiver's centroid stands for its whole area: a large receiver
     // close to a small shooter (a ceiling just above a lamp's back) can then take in more than
@@ -160,7 +160,7 @@ SplitIrradiance ProgressiveRadiosity::gather(const Element& e, std::uint64_t key
                                          : 1;
                 for (Side r : kBothSides) {
                     const Color formFactor = formFactor_.elementToTriangle(
-                        e, r, mesh_.corners(shooter), patch, s, raysEach,
+                        e, r, shooter.corners, patch, s, raysEach,
                         hashValues(k, sideIndex(s), key, sideIndex(r)), rayCount);
                     E.total[sideIndex(r)] += shot * formFactor;
                     E.direct[sideIndex(r)] += emitted * formFactor;
@@ -203,7 +203,7 @@ std::size_t ProgressiveRadiosity::subdivide(int level) {
     }
     for (std::uint32_t c : children) {
         Element& child = mesh_.elements[c];
-        SurfaceProbe::place(mesh_.patches[child.patch], mesh_.corners(child), child);
+        SurfaceProbe::place(mesh_.patches[child.patch], child.corners, child);
     }
     std::vector<std::array<Color, 2>> E(children.size());
     rays_ +=

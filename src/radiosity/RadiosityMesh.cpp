@@ -52,10 +52,7 @@ float RadiosityMesh::longestEdge(const std::array<Vec3, 3>& t) {
 std::uint32_t RadiosityMesh::addElement(std::uint32_t patch, const std::array<Vec3, 3>& corners,
                                         int level) {
     Element e;
-    for (std::size_t k = 0; k < 3; ++k) {
-        e.vertices[k] = static_cast<std::uint32_t>(positions.size());
-        positions.push_back(corners[k]);
-    }
+    e.corners = corners;
     e.patch = patch;
     e.level = level;
     e.area = 0.5f * length(cross(corners[1] - corners[0], corners[2] - corners[0]));
@@ -71,7 +68,7 @@ std::uint32_t RadiosityMesh::addElement(std::uint32_t patch, const std::array<Ve
 }
 
 std::uint32_t RadiosityMesh::split(std::uint32_t element) {
-    const std::array<Vec3, 3> c = corners(elements[element]);
+    const std::array<Vec3, 3> c = elements[element].corners;
     const Vec3 m01 = 0.5f * (c[0] + c[1]), m12 = 0.5f * (c[1] + c[2]), m20 = 0.5f * (c[2] + c[0]);
     const std::uint32_t patch = elements[element].patch;
     const int level = elements[element].level + 1;
@@ -81,11 +78,6 @@ std::uint32_t RadiosityMesh::split(std::uint32_t element) {
     addElement(patch, {m12, m20, m01}, level);
     elements[element].firstChild = first;
     return first;
-}
-
-std::array<Vec3, 3> RadiosityMesh::corners(const Element& element) const {
-    return {positions[element.vertices[0]], positions[element.vertices[1]],
-            positions[element.vertices[2]]};
 }
 
 std::vector<std::uint32_t> RadiosityMesh::leaves() const {

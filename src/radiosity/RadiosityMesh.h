@@ -16,7 +16,6 @@ class Scene;
 // (two-level substructuring, Cohen et al. 1986), all flat triangles in world space.
 class RadiosityMesh {
 public:
-    std::vector<Vec3> positions;  // element corners
     std::vector<Patch> patches;
     std::vector<Element> elements;
 
@@ -31,7 +30,6 @@ public:
     // Splits a leaf into four children at its edges' midpoints; returns the first child's index.
     std::uint32_t split(std::uint32_t element);
 
-    std::array<Vec3, 3> corners(const Element& element) const;
     // The indices of the elements that have no children.
     std::vector<std::uint32_t> leaves() const;
     // A hash of the patches (geometry, emission, the elements' reflectance), the scene's lights

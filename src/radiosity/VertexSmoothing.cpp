@@ -31,7 +31,7 @@ VertexSmoothing::VertexSmoothing(const RadiosityMesh& mesh, std::vector<std::uin
         const Element& e = mesh.elements[leaves_[i]];
         const float brightness = std::max(e.irradiance[0].average(), e.irradiance[1].average());
         for (std::size_t k = 0; k < 3; ++k) {
-            const Vec3& p = mesh.positions[e.vertices[k]];
+            const Vec3& p = e.corners[k];
             const Key key{std::llround(p.x / cell), std::llround(p.y / cell),
                           std::llround(p.z / cell)};
             std::vector<std::uint32_t>& bucket = buckets[key];
@@ -67,7 +67,7 @@ Element VertexSmoothing::gatherSite(const Scene& scene, std::size_t vertex,
                                     std::uint64_t& rayCount) const {
     const Site& site = sites_[vertex];
     Element at = mesh_.elements[site.leaf];
-    Vec3 corner = mesh_.positions[at.vertices[site.corner]];
+    Vec3 corner = at.corners[site.corner];
     const Patch& patch = mesh_.patches[at.patch];
     // (A curved patch's corners are on its own surface, which the chord to them would meet.)
     if (!patch.curved) {
@@ -97,7 +97,7 @@ RadiositySolution VertexSmoothing::solution(float lookupDistance, std::uint64_t 
     std::vector<std::array<Vec3, 3>> faces;
     faces.reserve(leaves_.size());
     for (std::uint32_t e : leaves_)
-        faces.push_back(mesh_.corners(mesh_.elements[e]));
+        faces.push_back(mesh_.elements[e].corners);
     return RadiositySolution(std::move(faces), std::move(faceVertices), std::move(vertexIrradiance),
                              std::move(vertexDirect), lookupDistance, fingerprint, statistics);
 }

@@ -32,7 +32,7 @@ std::vector<std::array<Vec3, 3>> elementsOn(const RadiosityMesh& mesh, const Vec
         if (std::abs(dot(mesh.patches[p].corners[0] - point, normal)) < 1e-5f) patches.insert(p);
     std::vector<std::array<Vec3, 3>> elements;
     for (const Element& e : mesh.elements)
-        if (patches.count(e.patch)) elements.push_back(mesh.corners(e));
+        if (patches.count(e.patch)) elements.push_back(e.corners);
     return elements;
 }
 

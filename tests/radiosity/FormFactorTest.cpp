@@ -179,9 +179,8 @@ TEST(FormFactorTest, NothingHidesTwoWallsOfACornerFromEachOther) {
         for (std::uint32_t s : sources) {
             const Element& source = p.mesh.elements[s];
             const Color visibility = formFactor.areaVisibility(
-                p.mesh.elements[r], p.mesh.corners(p.mesh.elements[r]), false, Side::Front,
-                p.mesh.corners(source), p.mesh.patches[source.patch], Side::Front, 16,
-                hashValues(r, s), rays);
+                p.mesh.elements[r], p.mesh.elements[r].corners, false, Side::Front, source.corners,
+                p.mesh.patches[source.patch], Side::Front, 16, hashValues(r, s), rays);
             if (visibility.r < 1) ++hidden;
         }
     EXPECT_EQ(hidden, 0) << "of " << receivers.size() * sources.size() << " pairs";
@@ -209,7 +208,7 @@ TEST(FormFactorTest, RaysWeighAsMuchAsThePieceOfTheSourceTheyStandFor) {
         const std::array<Vec3, 3>& wall = p.mesh.patches[patch].corners;
         const double F = FormFactor::pointToTriangle(at, up, wall);
         const Color visibility =
-            formFactor.areaVisibility(receiver, p.mesh.corners(receiver), false, Side::Front, wall,
+            formFactor.areaVisibility(receiver, receiver.corners, false, Side::Front, wall,
                                       p.mesh.patches[patch], Side::Front, 4096, patch, rays);
         seen += F * visibility.r;
         whole += F;

@@ -46,7 +46,7 @@ double exactPower(const HierarchicalRadiosity& solver, std::uint32_t receiver,
             const Side side =
                 dot(se.normal, re.centroid - se.centroid) > 0 ? Side::Front : Side::Back;
             const double F = FormFactor::pointToSideOfTriangle(Vec3d(re.centroid), Vec3d(n),
-                                                               mesh.corners(se), se.normal, side);
+                                                               se.corners, se.normal, side);
             power += re.area * F * solver.radiosity()[s][sideIndex(side)].average();
         }
     return power;
@@ -75,7 +75,7 @@ TEST(HierarchicalClusteringTest, EveryPatchIsInOneClusterTree) {
                 ClusterHierarchy::isCluster(child) ? clusters.cluster(child).memberCount : 1;
         EXPECT_EQ(fromChildren, cluster.memberCount);
         for (std::uint32_t e : clusters.members(cluster))
-            for (const Vec3& corner : solver.mesh().corners(solver.mesh().elements[e]))
+            for (const Vec3& corner : solver.mesh().elements[e].corners)
                 EXPECT_LE(length(corner - cluster.center), cluster.radius * 1.0001f);
     }
 }

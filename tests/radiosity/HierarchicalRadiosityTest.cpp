@@ -177,7 +177,7 @@ TEST(HierarchicalRadiosityTest, EveryLinkLeftIsWithinTheOraclesBound) {
     const RadiosityMesh& mesh = solver.mesh();
     const float smallest = 0.5f / 8;  // element_size / 2^subdivision_levels
     const auto unsplittable = [&](std::uint32_t e) {
-        const auto c = mesh.corners(mesh.elements[e]);
+        const auto c = mesh.elements[e].corners;
         return std::max({length(c[1] - c[0]), length(c[2] - c[1]), length(c[0] - c[2])}) <=
                smallest;
     };
