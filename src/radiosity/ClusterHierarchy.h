@@ -90,6 +90,18 @@ public:
         }
     }
 
+    // Per cluster, whether any of its members is one of which `holds` (a predicate on root
+    // elements) is true.
+    template <typename Predicate>
+    std::vector<char> clustersHolding(Predicate holds) const {
+        std::vector<char> result(clusters_.size(), 0);
+        // Children come after their parent: from the last back, each child is done first.
+        for (std::size_t k = clusters_.size(); k-- > 0;)
+            for (std::uint32_t child : clusters_[k].children)
+                if (isCluster(child) ? result[indexOf(child)] != 0 : holds(child)) result[k] = 1;
+        return result;
+    }
+
     // The irradiance a cluster (a node) delivers at `at` across a plane facing it (at normal
     // incidence): the sum over its members of B A cos / (pi d^2), from each member's centroid and
     // with its side that faces `at`, B from `radiosities`.

@@ -541,12 +541,17 @@ std::vector<std::array<Color, 2>> HierarchicalRadiosity::gatherThroughClusters(
     return gathered;
 }
 
-void HierarchicalRadiosity::updateFromClusters() {
+void HierarchicalRadiosity::updateClusterTransfers() {
     if (clusters_.empty()) return;
     clusterTransfers_.resize(clusterLinks_.size() + ColorLanes::kPadding);
     parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
         clusterTransfers_.set(linkPosition_[i], clusterTransfer(clusterLinks_[i]));
     });
+}
+
+void HierarchicalRadiosity::updateFromClusters() {
+    if (clusters_.empty()) return;
+    updateClusterTransfers();
     fromClusters_ = gatherThroughClusters(clusterTransfers_);
 }
 
@@ -914,9 +919,19 @@ void HierarchicalRadiosity::gatherAtVertices(VertexSmoothing& smoothing) {
         ClusterHierarchy::MemberRadiosities emitted;
         clusters_.fillMemberRadiosities(
             emitted, [&](std::uint32_t e, Side side) { return emittedDirectly(e, side); });
+        const auto emits = [&](std::uint32_t e) {
+            return !(emittedDirectly(e, Side::Front) + emittedDirectly(e, Side::Back)).isBlack();
+        };
+        // Only the links from a source with an emitter in it bring anything here (a lamp is in
+        // a few of the clusters, its ancestors): the others' sums are skipped.
+        const std::vector<char> emitting = clusters_.clustersHolding(emits);
         directTransfers.resize(clusterLinks_.size() + ColorLanes::kPadding);
         parallelFor(clusterLinks_.size(), 64, [&](std::size_t i) {
             const ClusterLink& link = clusterLinks_[i];
+            if (ClusterHierarchy::isCluster(link.source)
+                    ? !emitting[ClusterHierarchy::indexOf(link.source)]
+                    : !emits(link.source))
+                return;
             const Vec3 centre = clusters_.center(mesh_, link.receiver);
             const Color delivered =
                 ClusterHierarchy::isCluster(link.source)
@@ -1055,7 +1070,7 @@ std::optional<RadiositySolution> HierarchicalRadiosity::solve(
     std::vector<LeafTerm>().swap(leafTerms_);
     std::vector<std::uint32_t>().swap(leafTermsFirst_);
     std::vector<std::uint32_t>().swap(leafTermsEnd_);
-    updateFromClusters();
+    updateClusterTransfers();
     VertexSmoothing smoothing(mesh_, mesh_.leaves(), 1e-5 * patchSize_);
     gatherAtVertices(smoothing);
     if (cancelled()) return std::nullopt;

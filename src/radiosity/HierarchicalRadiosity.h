@@ -212,7 +212,9 @@ private:
     void refreshMemberRadiosities();
     // Lays out the cluster links in the order of their receivers for clusterLinksAt.
     void indexClusterLinks();
-    // clusterTransfers_ and fromClusters_ from the present radiosities.
+    // clusterTransfers_ from the present radiosities.
+    void updateClusterTransfers();
+    // clusterTransfers_, and fromClusters_ from them.
     void updateFromClusters();
     // The element links a leaf gathers through: its own and its ancestors' (at most a leaf term
     // each).
