@@ -651,18 +651,21 @@ void HierarchicalRadiosity::indexClusterLinks() {
     elementReceives_.assign(next.begin(), next.begin() + static_cast<std::ptrdiff_t>(elements) + 1);
     clusterReceives_.assign(next.begin() + static_cast<std::ptrdiff_t>(elements), next.end());
     linkPosition_.resize(count);
+    for (std::size_t i = 0; i < count; ++i)
+        linkPosition_[i] = next[slot(clusterLinks_[i].receiver)]++;
+    // What the gathers read of each link, filled in parallel: each reads its ends' centres, here
+    // and there in memory.
     for (std::vector<float>* v : {&received_.x, &received_.y, &received_.z, &received_.distance2})
         v->resize(count + ColorLanes::kPadding);
-    for (std::size_t i = 0; i < count; ++i) {
+    parallelFor(count, 1024, [&](std::size_t i) {
         const ClusterLink& link = clusterLinks_[i];
-        const std::uint32_t at = next[slot(link.receiver)]++;
-        linkPosition_[i] = at;
+        const std::uint32_t at = linkPosition_[i];
         const Vec3 sourceCenter = clusters_.center(mesh_, link.source);
         received_.x[at] = sourceCenter.x;
         received_.y[at] = sourceCenter.y;
         received_.z[at] = sourceCenter.z;
         received_.distance2[at] = linkDistance2(link.receiver, link.source);
-    }
+    });
 }
 
 void HierarchicalRadiosity::checkSize(std::size_t candidates) {
