@@ -92,6 +92,12 @@ constexpr float kNearSpread = 24;
 constexpr int kMaxRefinementPasses = 3;
 constexpr std::size_t kFewCandidates = 1000;
 
+// A cluster link's relative error (see kClusterSeparation) between ends whose bounding spheres'
+// centres are `distance` apart and whose radii add up to `radii`.
+float spreadBetween(float distance, float radii) {
+    return distance >= kClusterSeparation * radii ? 2 * radii / distance : kNearSpread;
+}
+
 double square(float x) {
     return static_cast<double>(x) * x;
 }
@@ -354,18 +360,25 @@ Color HierarchicalRadiosity::clusterTransfer(const ClusterLink& link) const {
            deliveredAt(link.source, clusters_.center(mesh_, link.receiver), false);
 }
 
-double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link) const {
-    return clusterLinkError(
-        link, deliveredAt(link.source, clusters_.center(mesh_, link.receiver), false));
+float HierarchicalRadiosity::clusterSpread(std::uint32_t receiver, std::uint32_t source) const {
+    const ClusterHierarchy::Extent r = clusters_.extent(mesh_, receiver);
+    const ClusterHierarchy::Extent s = clusters_.extent(mesh_, source);
+    return spreadBetween(length(s.center - r.center), r.radius + s.radius);
 }
 
-double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link,
-                                               const Color& unoccluded) const {
+double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link) const {
+    return clusterLinkError(link,
+                            deliveredAt(link.source, clusters_.center(mesh_, link.receiver), false),
+                            clusterSpread(link.receiver, link.source));
+}
+
+double HierarchicalRadiosity::clusterLinkError(const ClusterLink& link, const Color& unoccluded,
+                                               float spread) const {
     const float reflectance = ClusterHierarchy::isCluster(link.receiver)
                                   ? clusters_.cluster(link.receiver).reflectance
                                   : mesh_.elements[link.receiver].reflectance.average();
     return static_cast<double>(reflectance) * unoccluded.average() *
-           (link.spread + (link.partlyVisible() ? 1.0f : 0.0f));
+           (spread + (link.partlyVisible() ? 1.0f : 0.0f));
 }
 
 float HierarchicalRadiosity::linkDistance2(std::uint32_t receiver, std::uint32_t source) const {
@@ -442,18 +455,17 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
     if (sourcePower(c.source) >= kBrightSource * initialPower_) return d;
     const ClusterHierarchy::Extent receiver = clusters_.extent(mesh_, c.receiver);
     const ClusterHierarchy::Extent source = clusters_.extent(mesh_, c.source);
-    const Vec3 between = source.center - receiver.center;
-    const float distance = length(between);
+    const float distance = length(source.center - receiver.center);
     const float radii = receiver.radius + source.radius;
     if (!(distance > radii)) return d;  // the two overlap
     ClusterLink link;
     link.receiver = c.receiver;
     link.source = c.source;
-    link.spread = distance >= kClusterSeparation * radii ? 2 * radii / distance : kNearSpread;
     link.visibility = Color(1);
+    const float spread = spreadBetween(distance, radii);
     // What the source brings without occlusion: summed once over its members for both errors.
     const Color unoccluded = deliveredAt(c.source, receiver.center, false);
-    if (clusterLinkError(link, unoccluded) > epsilon_) return d;
+    if (clusterLinkError(link, unoccluded, spread) > epsilon_) return d;
     d.split = Element::kNone;
     // Nothing of the source faces the receiver (one plane): nothing to link.
     if (unoccluded.isBlack() && deliveredAt(c.source, receiver.center, true).isBlack()) return d;
@@ -461,7 +473,7 @@ HierarchicalRadiosity::Decision HierarchicalRadiosity::decideWithCluster(
         c.receiver, c.source,
         c.seenWhole != 0 ? settings_.refinedVisibilityRays : settings_.visibilityRays,
         hashValues(c.receiver, c.source), rayCount);
-    if (clusterLinkError(link, unoccluded) > epsilon_) {
+    if (clusterLinkError(link, unoccluded, spread) > epsilon_) {
         d.split = clusterSplitChoice(c.receiver, c.source);
         return d;
     }

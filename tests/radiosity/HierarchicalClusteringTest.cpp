@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -80,6 +81,25 @@ TEST(HierarchicalClusteringTest, EveryPatchIsInOneClusterTree) {
     }
 }
 
+TEST(HierarchicalClusteringTest, TheClustersHoldingARootAreItsAncestors) {
+    Scene scene = tiledBox(2);
+    HierarchicalRadiosity solver(scene);
+    const ClusterHierarchy& clusters = solver.clusters();
+    const std::uint32_t root = clusters.members(clusters.cluster(clusters.top()))[5];
+    const std::vector<char> holding =
+        clusters.clustersHolding([&](std::uint32_t e) { return e == root; });
+    ASSERT_EQ(holding.size(), clusters.clusters().size());
+    std::vector<char> ancestors(clusters.clusters().size(), 0);
+    for (std::uint32_t k = clusters.parentOf(root); k != Element::kNone;
+         k = clusters.clusters()[k].parent)
+        ancestors[k] = 1;
+    EXPECT_EQ(holding, ancestors);
+    EXPECT_GT(std::count(holding.begin(), holding.end(), 1), 2);
+    // None holds what no root is.
+    for (char h : clusters.clustersHolding([](std::uint32_t) { return false; }))
+        EXPECT_EQ(h, 0);
+}
+
 TEST(HierarchicalClusteringTest, AClusterLinksPowerIsItsChildrensAndItsMembers) {
     // A glowing ceiling of 8 x 8 squares over a floor of 8 x 8: far enough apart, pieces of each
     // are linked as clusters.
@@ -105,8 +125,9 @@ TEST(HierarchicalClusteringTest, AClusterLinksPowerIsItsChildrensAndItsMembers) 
             children += solver.clusterLinkPower(part).average();
         }
         // Both within the oracle's bound on the link's relative error.
-        EXPECT_NEAR(power, children, link.spread * power) << link.receiver << " " << link.source;
-        EXPECT_NEAR(power, exactPower(solver, link.receiver, link.source), link.spread * power)
+        const float spread = solver.clusterSpread(link.receiver, link.source);
+        EXPECT_NEAR(power, children, spread * power) << link.receiver << " " << link.source;
+        EXPECT_NEAR(power, exactPower(solver, link.receiver, link.source), spread * power)
             << link.receiver << " " << link.source;
         ++checked;
     }
