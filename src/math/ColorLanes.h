@@ -27,8 +27,8 @@ struct ColorLanes {
         b[lane] += keptIf(keep, weight * cb);
     }
     // weight x colour added to `ifTrue` where `which`, else to `ifFalse` (+0 to the other), and
-    // to neither where not `keep`. Not a condition: it becomes a branch (the compiler makes
-    // x + (c ? y : 0) a conditional add).
+    // to neither where not `keep`: by bit masks, since a condition would become a branch (the
+    // compiler makes x + (c ? y : 0) a conditional add).
     static void addToOne(bool keep, bool which, ColorLanes& ifTrue, ColorLanes& ifFalse,
                          std::uint32_t lane, float weight, float cr, float cg, float cb) {
         ifTrue.addIf(keep && which, lane, weight, cr, cg, cb);
