@@ -42,6 +42,7 @@ BOXES = ["original", "glossy"]
 # (label, the scene's "radiosity" block, spp)
 SETTINGS: list[tuple[str, dict, int]] = [
     ("hierarchical, defaults, 16 spp", {"method": "hierarchical"}, 16),
+    ("hierarchical, defaults, 64 spp", {"method": "hierarchical"}, 64),
     ("hierarchical, direct_samples 16, 16 spp", {"method": "hierarchical", "direct_samples": 16}, 16),
     ("hierarchical, direct_samples 16, 64 spp", {"method": "hierarchical", "direct_samples": 16}, 64),
     ("hierarchical, final_gather 64, 16 spp", {"method": "hierarchical", "final_gather": 64}, 16),
