@@ -279,12 +279,15 @@ TEST_F(CliEnvironmentFloor, WhittedShowsKdE) {
 
 // Every element (and vertex) gathers the environment with 1024 importance-sampled rays; the image
 // interpolates their values (the farthest pixel measured 1.8% off): the mean within 0.5%, each
-// pixel within 6%.
+// pixel within 6%. Both methods: the environment shoots into the hierarchy as into the patches.
 TEST_F(CliEnvironmentFloor, RadiosityShowsKdEOverPi) {
-    json scene = floorUnderTheSky(map(), "radiosity", 1, 1024);
-    scene["radiosity"] = {{"patch_size", 0.5}};
-    const Image image = renderScene(scene).image;
-    expectUniformImage(image, lambertian(0.5 / kPiD), 0.005, 0.06);
+    for (const char* method : {"progressive", "hierarchical"}) {
+        SCOPED_TRACE(method);
+        json scene = floorUnderTheSky(map(), "radiosity", 1, 1024);
+        scene["radiosity"] = {{"patch_size", 0.5}, {"method", method}};
+        const Image image = renderScene(scene).image;
+        expectUniformImage(image, lambertian(0.5 / kPiD), 0.005, 0.06);
+    }
 }
 
 // --- The white furnace --------------------------------------------------------------------------
