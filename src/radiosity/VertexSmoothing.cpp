@@ -41,6 +41,7 @@ VertexSmoothing::VertexSmoothing(const RadiosityMesh& mesh, std::vector<std::uin
             if (vertex == Element::kNone) {
                 vertex = static_cast<std::uint32_t>(vertexNormals.size());
                 vertexNormals.push_back(e.normal);
+                meanNormals_.emplace_back();
                 vertexIrradiance.emplace_back();
                 weights.push_back(0);
                 sites_.emplace_back();
@@ -48,6 +49,11 @@ VertexSmoothing::VertexSmoothing(const RadiosityMesh& mesh, std::vector<std::uin
             }
             faceVertices[i][k] = vertex;
             weights[vertex] += e.area;
+            // Each leaf's normal weighs by its angle at the vertex (Thuermer and Wuethrich 1998):
+            // unlike its area, that angle does not change when the leaves around are split.
+            const Vec3 along = e.corners[(k + 1) % 3] - p, across = e.corners[(k + 2) % 3] - p;
+            meanNormals_[vertex] +=
+                std::atan2(length(cross(along, across)), dot(along, across)) * e.normal;
             for (std::size_t side = 0; side < 2; ++side)
                 vertexIrradiance[vertex][side] += e.irradiance[side] * e.area;
             Site& site = sites_[vertex];
@@ -57,9 +63,13 @@ VertexSmoothing::VertexSmoothing(const RadiosityMesh& mesh, std::vector<std::uin
                 site = {leaves_[i], k, brightness};
         }
     }
-    for (std::size_t v = 0; v < weights.size(); ++v)
+    for (std::size_t v = 0; v < weights.size(); ++v) {
         for (Color& c : vertexIrradiance[v])
             c /= weights[v];
+        // (Leaves of no area leave the first leaf's normal.)
+        meanNormals_[v] =
+            length(meanNormals_[v]) > 0 ? normalize(meanNormals_[v]) : vertexNormals[v];
+    }
     vertexDirect.resize(vertexIrradiance.size());
 }
 
@@ -83,6 +93,8 @@ Element VertexSmoothing::gatherSite(const Scene& scene, std::size_t vertex,
     }
     at.centroid = corner + 0.02f * (at.centroid - corner);
     at.surfacePoint = at.centroid;
+    // (A curved patch's true normal is known: the leaves' normals are only its chords'.)
+    if (!patch.curved) at.normal = meanNormals_[vertex];
     at.surfaceNormal = at.normal;
     if (patch.curved)
         if (const std::optional<Hit> hit = SurfaceProbe::at(patch, at.centroid)) {

@@ -35,8 +35,11 @@ public:
     // corner on a contact line takes the visible side's value), moved 2% of the way from the
     // vertex to the leaf's centroid (inside the leaf, not on its edge), or from halfway to
     // another surface the vertex lies beyond (a box's edge sunk into the floor), or from a tenth
-    // of the way in when a surface meets the vertex itself (a contact line). The copy's
-    // surface point is on the shape's true surface. `rayCount` grows by the rays traced.
+    // of the way in when a surface meets the vertex itself (a contact line). The copy faces the
+    // angle-weighted mean normal of the leaves around the vertex: on a curved mesh the brightest
+    // leaf's own normal is the one turned most towards the light, which would make the vertex
+    // take the brightest value of its fan. The copy's surface point is on the shape's true
+    // surface. `rayCount` grows by the rays traced.
     Element gatherSite(const Scene& scene, std::size_t vertex, std::uint64_t& rayCount) const;
     // The leaf a vertex is gathered on (see gatherSite).
     std::uint32_t siteLeaf(std::size_t vertex) const { return sites_[vertex].leaf; }
@@ -54,6 +57,7 @@ private:
     const RadiosityMesh& mesh_;
     std::vector<std::uint32_t> leaves_;
     std::vector<Site> sites_;
+    std::vector<Vec3> meanNormals_;
 };
 
 }  // namespace lancer
