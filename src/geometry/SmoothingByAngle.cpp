@@ -23,13 +23,6 @@ Vec3 faceNormal(const Vec3& a, const Vec3& b, const Vec3& c) {
     return l > 0 ? n / l : Vec3();
 }
 
-// The angle of a triangle at its vertex `p`, between the edges to `q` and `r`.
-float cornerAngle(const Vec3& p, const Vec3& q, const Vec3& r) {
-    const Vec3 e1 = q - p;
-    const Vec3 e2 = r - p;
-    return std::atan2(length(cross(e1, e2)), dot(e1, e2));
-}
-
 }  // namespace
 
 void SmoothingByAngle::apply(TriangleMesh& mesh, float thresholdDegrees) {
@@ -54,8 +47,9 @@ void SmoothingByAngle::apply(TriangleMesh& mesh, float thresholdDegrees) {
     const auto angleAt = [&](std::size_t corner) {
         const std::size_t t = corner / 3;
         const int k = static_cast<int>(corner % 3);
-        return cornerAngle(mesh.positions[vertex(t, k)], mesh.positions[vertex(t, (k + 1) % 3)],
-                           mesh.positions[vertex(t, (k + 2) % 3)]);
+        const Vec3& p = mesh.positions[vertex(t, k)];
+        return angleBetween(mesh.positions[vertex(t, (k + 1) % 3)] - p,
+                            mesh.positions[vertex(t, (k + 2) % 3)] - p);
     };
 
     const float cosThreshold =

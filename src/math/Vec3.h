@@ -89,6 +89,12 @@ template <typename T>
 LANCER_ALWAYS_INLINE Vec3T<T> normalize(const Vec3T<T>& v) {
     return v / length(v);
 }
+// The angle between two vectors, in radians: accurate near 0 and pi, where acos of the normalized
+// dot product is not.
+template <typename T>
+T angleBetween(const Vec3T<T>& a, const Vec3T<T>& b) {
+    return std::atan2(length(cross(a, b)), dot(a, b));
+}
 template <typename T>
 Vec3T<T> abs(const Vec3T<T>& v) {
     return {std::abs(v.x), std::abs(v.y), std::abs(v.z)};

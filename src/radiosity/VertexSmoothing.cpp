@@ -51,9 +51,8 @@ VertexSmoothing::VertexSmoothing(const RadiosityMesh& mesh, std::vector<std::uin
             weights[vertex] += e.area;
             // Each leaf's normal weighs by its angle at the vertex (Thuermer and Wuethrich 1998):
             // unlike its area, that angle does not change when the leaves around are split.
-            const Vec3 along = e.corners[(k + 1) % 3] - p, across = e.corners[(k + 2) % 3] - p;
             meanNormals_[vertex] +=
-                std::atan2(length(cross(along, across)), dot(along, across)) * e.normal;
+                angleBetween(e.corners[(k + 1) % 3] - p, e.corners[(k + 2) % 3] - p) * e.normal;
             for (std::size_t side = 0; side < 2; ++side)
                 vertexIrradiance[vertex][side] += e.irradiance[side] * e.area;
             Site& site = sites_[vertex];

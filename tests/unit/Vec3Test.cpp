@@ -104,6 +104,15 @@ TEST(Vec3Test, PermuteReordersComponents) {
     EXPECT_EQ(permute(v, 2, 2, 0), Vec3(3, 3, 1));
 }
 
+TEST(Vec3Test, AngleBetweenIsAccurateAtEveryAngle) {
+    EXPECT_FLOAT_EQ(angleBetween(Vec3(2, 0, 0), Vec3(0, 0, 3)), kPi / 2);
+    EXPECT_FLOAT_EQ(angleBetween(Vec3(1, 1, 0), Vec3(1, 0, 0)), kPi / 4);
+    EXPECT_FLOAT_EQ(angleBetween(Vec3(1, 0, 0), Vec3(-1, 0, 0)), kPi);
+    EXPECT_EQ(angleBetween(Vec3(0, 1, 0), Vec3(0, 5, 0)), 0.0f);
+    // 1e-4 radians, where acos of the dot product (1 - 5e-9, which rounds to 1) gives 0.
+    EXPECT_NEAR(angleBetween(Vec3(1, 0, 0), Vec3(1, 1e-4f, 0)), 1e-4f, 1e-9f);
+}
+
 TEST(Vec3Test, ReflectMirrorsAboutTheNormal) {
     // Exact for an axis normal: the tangential part flips, the normal part stays.
     EXPECT_EQ(reflect(Vec3(1, 2, 3), Vec3(0, 1, 0)), Vec3(-1, 2, -3));
