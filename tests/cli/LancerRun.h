@@ -35,9 +35,11 @@ struct RunResult {
 };
 std::ostream& operator<<(std::ostream& out, const RunResult& run);
 
-// Long enough for any render of this suite under AddressSanitizer; a run that takes longer is a
-// hang (or a render that should never have started).
-constexpr std::chrono::seconds kRunTimeout{60};
+// Long enough for any render of this suite under AddressSanitizer with another test running beside
+// it on CI's two cores; a run that takes longer is a hang (or a render that should never have
+// started). The slowest, radiosity through a glossy floor at 256 spp, takes 37 s alone under
+// AddressSanitizer and once went past 60 s beside another test.
+constexpr std::chrono::seconds kRunTimeout{120};
 
 // Runs lancer with `arguments` in `workingFolder` and waits for it to end.
 RunResult runLancer(const std::vector<std::string>& arguments, const fs::path& workingFolder,
