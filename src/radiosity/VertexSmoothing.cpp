@@ -92,14 +92,16 @@ Element VertexSmoothing::gatherSite(const Scene& scene, std::size_t vertex,
     }
     at.centroid = corner + 0.02f * (at.centroid - corner);
     at.surfacePoint = at.centroid;
-    // (A curved patch's true normal is known: the leaves' normals are only its chords'.)
-    if (!patch.curved) at.normal = meanNormals_[vertex];
-    at.surfaceNormal = at.normal;
-    if (patch.curved)
+    if (patch.curved) {
+        // (A curved patch's true normal is known: the leaves' normals are only its chords'.)
+        at.surfaceNormal = at.normal;
         if (const std::optional<Hit> hit = SurfaceProbe::at(patch, at.centroid)) {
             at.surfacePoint = hit->p;
             at.surfaceNormal = hit->ng;
         }
+    } else {
+        at.normal = at.surfaceNormal = meanNormals_[vertex];
+    }
     return at;
 }
 

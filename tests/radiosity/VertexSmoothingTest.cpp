@@ -83,8 +83,7 @@ void expectTheSunOnEveryVertexNormal(const std::string& method) {
                     const Vec3 normal = normalize(cross(b - a, c - a));
                     // The facet's angle at the vertex.
                     const Vec3 q = length(a - p) < 1e-5f ? b : a, r = length(c - p) < 1e-5f ? b : c;
-                    const float angle = std::acos(dot(normalize(q - p), normalize(r - p)));
-                    normalSum += angle * normal;
+                    normalSum += angleBetween(q - p, r - p) * normal;
                     darkest = std::min(darkest, dot(normal, towardsSun));
                 }
             // (Where a facet around the vertex is near the shadow's edge, so is the vertex.)
