@@ -195,7 +195,7 @@ private:
                             std::uint64_t seed, std::uint64_t& rayCount) const;
     // What the cluster links received by a leaf, its ancestors and the clusters above its root
     // bring to `at` (the leaf, or a gather site on it) when each brings `perLink` (at normal
-    // incidence, at its receiver's centre; in the order of the receivers, see linkPosition_):
+    // incidence, at its receiver's centre; in clusterLinks_'s order, that of their receivers):
     // see receivedShare().
     std::array<Color, 2> clusterLinksAt(const Element& at, std::uint32_t leaf,
                                         const ColorArrays& perLink) const;
@@ -214,7 +214,7 @@ private:
     Color deliveredAt(std::uint32_t node, const Vec3& at, bool unit) const;
     // memberRadiosities_ from the root elements' present radiosities.
     void refreshMemberRadiosities();
-    // Lays out the cluster links in the order of their receivers for clusterLinksAt.
+    // Puts the cluster links in the order of their receivers for clusterLinksAt.
     void indexClusterLinks();
     // clusterTransfers_ from the present radiosities.
     void updateClusterTransfers();
@@ -283,11 +283,11 @@ private:
     std::vector<std::array<Color, 2>> radiosity_;
     std::vector<std::vector<Link>> links_;
     ClusterHierarchy clusters_;
+    // After each refinement (indexClusterLinks), in the order of their receivers, which
+    // clusterLinksAt reads: those of element e are clusterLinks_[elementReceives_[e],
+    // elementReceives_[e + 1]), of cluster c [clusterReceives_[c], clusterReceives_[c + 1]).
     std::vector<ClusterLink> clusterLinks_;
-    // The cluster links in the order of their receivers, which clusterLinksAt reads: link i of
-    // clusterLinks_ is at linkPosition_[i]; those of element e are at [elementReceives_[e],
-    // elementReceives_[e + 1]), of cluster c at [clusterReceives_[c], clusterReceives_[c + 1]).
-    std::vector<std::uint32_t> linkPosition_, elementReceives_, clusterReceives_;
+    std::vector<std::uint32_t> elementReceives_, clusterReceives_;
     // What clusterLinksAt reads of each, in that order and one array per number: its source's
     // centre and its receiver's squared distance to it (linkDistance2).
     struct ReceivedLinks {
