@@ -62,6 +62,21 @@ struct ColorLanes {
             for (std::uint32_t lane = 0; lane < kLanes; ++lane)
                 body(lane, i + lane, i + lane < last);
     }
+
+    // The same for items laid out in blocks of kLanes (block b holds items kLanes b to
+    // kLanes b + kLanes - 1, one array per number): calls body(block, lane, inRange) for every
+    // lane of the blocks that hold items of [first, last), item kLanes block + lane in its own
+    // lane, inRange for those of [first, last). A group of lanes then reads one block, however
+    // the range starts.
+    template <typename Body>
+    static void forEachBlock(std::uint32_t first, std::uint32_t last, Body body) {
+        if (first >= last) return;
+        for (std::uint32_t block = first / kLanes; block * kLanes < last; ++block)
+            for (std::uint32_t lane = 0; lane < kLanes; ++lane) {
+                const std::uint32_t i = block * kLanes + lane;
+                body(block, lane, i >= first && i < last);
+            }
+    }
 };
 
 }  // namespace lancer

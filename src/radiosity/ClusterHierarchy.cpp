@@ -31,23 +31,6 @@ constexpr std::uint32_t kFacingSearch = 8;
 
 }  // namespace
 
-void ClusterHierarchy::MemberShapes::push_back(const Element& e) {
-    x.push_back(e.centroid.x);
-    y.push_back(e.centroid.y);
-    z.push_back(e.centroid.z);
-    nx.push_back(e.normal.x);
-    ny.push_back(e.normal.y);
-    nz.push_back(e.normal.z);
-    area.push_back(e.area);
-    corners.push_back(e.corners);
-    patch.push_back(e.patch);
-}
-
-void ClusterHierarchy::MemberShapes::pad() {
-    for (std::vector<float>* v : {&x, &y, &z, &nx, &ny, &nz, &area})
-        v->resize(v->size() + ColorLanes::kPadding, 0.0f);
-}
-
 ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::uint32_t> roots)
     : members_(std::move(roots)) {
     if (members_.size() < 2) {
@@ -60,9 +43,22 @@ ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::u
     for (std::size_t i = 0; i < members_.size(); ++i) {
         const Element& e = mesh.elements[members_[i]];
         areaBefore_[i + 1] = areaBefore_[i] + e.area;
-        memberShapes_.push_back(e);
+        memberCorners_.push_back(e.corners);
     }
-    memberShapes_.pad();
+    memberShapes_.assign(blockCount(), ShapeBlock{});
+    for (std::size_t i = 0; i < members_.size(); ++i) {
+        const Element& e = mesh.elements[members_[i]];
+        ShapeBlock& block = memberShapes_[i / ColorLanes::kLanes];
+        const std::size_t lane = i % ColorLanes::kLanes;
+        block.x[lane] = e.centroid.x;
+        block.y[lane] = e.centroid.y;
+        block.z[lane] = e.centroid.z;
+        block.nx[lane] = e.normal.x;
+        block.ny[lane] = e.normal.y;
+        block.nz[lane] = e.normal.z;
+        block.area[lane] = e.area;
+        block.patch[lane] = e.patch;
+    }
 }
 
 std::uint32_t ClusterHierarchy::build(const RadiosityMesh& mesh, std::uint32_t first,
@@ -118,20 +114,21 @@ ClusterHierarchy::Extent ClusterHierarchy::extent(const RadiosityMesh& mesh,
 LANCER_ALWAYS_INLINE Color ClusterHierarchy::memberSum(std::uint32_t node, const Vec3& at,
                                                        const MemberRadiosities& radiosities) const {
     const Cluster& c = cluster(node);
-    const MemberShapes& m = memberShapes_;
-    const ColorArrays& front = radiosities[sideIndex(Side::Front)];
-    const ColorArrays& back = radiosities[sideIndex(Side::Back)];
     ColorLanes sum;
-    ColorLanes::forEach(c.firstMember, c.firstMember + c.memberCount,
-                        [&](std::uint32_t lane, std::uint32_t i, bool inRange) {
-                            const Term t = term(at.x - m.x[i], at.y - m.y[i], at.z - m.z[i],
-                                                m.nx[i], m.ny[i], m.nz[i], m.area[i]);
-                            // Both sides read, then one chosen: no branch in the lanes.
-                            const float fr = front.r[i], fg = front.g[i], fb = front.b[i];
-                            const float br = back.r[i], bg = back.g[i], bb = back.b[i];
-                            sum.addIf(inRange, lane, t.weight, t.front ? fr : br, t.front ? fg : bg,
-                                      t.front ? fb : bb);
-                        });
+    ColorLanes::forEachBlock(
+        c.firstMember, c.firstMember + c.memberCount,
+        [&](std::uint32_t block, std::uint32_t lane, bool inRange) {
+            const ShapeBlock& m = memberShapes_[block];
+            const RadiosityBlock& B = radiosities[block];
+            const Term t = term(at.x - m.x[lane], at.y - m.y[lane], at.z - m.z[lane], m.nx[lane],
+                                m.ny[lane], m.nz[lane], m.area[lane]);
+            // Both sides read, then one chosen: no branch in the lanes.
+            const std::size_t front = sideIndex(Side::Front), back = sideIndex(Side::Back);
+            const float fr = B.r[front][lane], fg = B.g[front][lane], fb = B.b[front][lane];
+            const float br = B.r[back][lane], bg = B.g[back][lane], bb = B.b[back][lane];
+            sum.addIf(inRange, lane, t.weight, t.front ? fr : br, t.front ? fg : bg,
+                      t.front ? fb : bb);
+        });
     return sum.total();
 }
 
@@ -175,19 +172,23 @@ ClusterHierarchy::SurfacePoint ClusterHierarchy::sample(const RadiosityMesh& mes
     u.x = width > 0
               ? std::clamp(static_cast<float>((target - areaBefore_[i]) / width), 0.0f, 0.99999994f)
               : 0.5f;
-    const MemberShapes& m = memberShapes_;
+    const auto shapeOf = [&](std::uint32_t j) -> std::pair<const ShapeBlock&, std::size_t> {
+        return {memberShapes_[j / ColorLanes::kLanes], j % ColorLanes::kLanes};
+    };
     for (std::uint32_t k = 0; k < std::min(kFacingSearch, c.memberCount); ++k) {
         const std::uint32_t j = c.firstMember + (i - c.firstMember + k) % c.memberCount;
-        const Vec3 normal(m.nx[j], m.ny[j], m.nz[j]), centroid(m.x[j], m.y[j], m.z[j]);
-        if (dot(normal, towards - centroid) > 0) {
+        const auto [m, lane] = shapeOf(j);
+        if (dot(Vec3(m.nx[lane], m.ny[lane], m.nz[lane]),
+                towards - Vec3(m.x[lane], m.y[lane], m.z[lane])) > 0) {
             i = j;
             break;
         }
     }
     // The member's corners, normal and patch from the members' arrays, not from its Element:
     // those are near what the search read, where the Element is a cache miss of its own.
-    return pointOn(m.corners[i], Vec3(m.nx[i], m.ny[i], m.nz[i]), mesh.patches[m.patch[i]], towards,
-                   u);
+    const auto [m, lane] = shapeOf(i);
+    return pointOn(memberCorners_[i], Vec3(m.nx[lane], m.ny[lane], m.nz[lane]),
+                   mesh.patches[m.patch[lane]], towards, u);
 }
 
 }  // namespace lancer

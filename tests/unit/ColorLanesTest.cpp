@@ -33,6 +33,29 @@ TEST(ColorLanesTest, ForEachVisitsEveryIndexOnceInItsLaneAndThePaddingOutOfRange
     }
 }
 
+TEST(ColorLanesTest, ForEachBlockVisitsTheWholeBlocksOfTheRangeEachItemInItsOwnLane) {
+    constexpr std::uint32_t kLanes = ColorLanes::kLanes;
+    for (std::uint32_t first : {0u, 3u, 8u, 13u}) {
+        for (std::uint32_t count : {0u, 1u, 5u, 7u, 8u, 9u, 16u, 21u}) {
+            const std::uint32_t last = first + count;
+            std::vector<int> visits(last + 2 * kLanes, 0);
+            ColorLanes::forEachBlock(
+                first, last, [&](std::uint32_t block, std::uint32_t lane, bool inRange) {
+                    ASSERT_LT(lane, kLanes);
+                    const std::uint32_t i = block * kLanes + lane;
+                    EXPECT_EQ(inRange, i >= first && i < last) << first << " " << count;
+                    ++visits[i];
+                });
+            // Every lane of the blocks from first's to (last - 1)'s, once; none of an empty range.
+            const std::uint32_t begin = first / kLanes * kLanes;
+            const std::uint32_t end = count == 0 ? begin : (last + kLanes - 1) / kLanes * kLanes;
+            for (std::uint32_t i = 0; i < visits.size(); ++i)
+                EXPECT_EQ(visits[i], i >= begin && i < end ? 1 : 0)
+                    << first << " " << count << " " << i;
+        }
+    }
+}
+
 TEST(ColorLanesTest, TheTotalAddsEachLanesSumInLaneOrderAndNothingPastTheLast) {
     // Terms whose sum depends on the order of the additions: 1e8 and -1e8 cancel only when they
     // meet before the small terms are rounded away.
