@@ -25,11 +25,8 @@ ClusterHierarchy::SurfacePoint pointOn(const std::array<Vec3, 3>& corners, const
     return s;
 }
 
-// Up to how many members a cluster's sample weighs all its members by their projected areas (a
-// loop over them: at 1024 the bunny's light was right to 0.2%, but the 200k knot took 65 s
-// instead of 49; at 256, 50 s); in a larger one, how many after the one drawn by area it looks
-// through for one facing the other end.
-constexpr std::uint32_t kScannedMembers = 256;
+// How many members after the one drawn a cluster's sample looks through for one facing the
+// other end.
 constexpr std::uint32_t kFacingSearch = 8;
 
 }  // namespace
@@ -157,20 +154,6 @@ Color ClusterHierarchy::irradianceAt(const Element& e, const Vec3& at,
     return radiosity[sideIndex(t.front ? Side::Front : Side::Back)] * t.weight;
 }
 
-std::uint32_t ClusterHierarchy::memberByArea(const Cluster& c, float& u) const {
-    // The member under u along the members' areas laid end to end, u then rescaled within it.
-    const double start = areaBefore_[c.firstMember];
-    const double target = start + u * (areaBefore_[c.firstMember + c.memberCount] - start);
-    const auto from = areaBefore_.begin() + c.firstMember + 1;
-    const auto found = std::upper_bound(from, from + c.memberCount - 1, target);
-    const auto i = static_cast<std::uint32_t>(found - areaBefore_.begin()) - 1;
-    const double width = areaBefore_[i + 1] - areaBefore_[i];
-    u = width > 0
-            ? std::clamp(static_cast<float>((target - areaBefore_[i]) / width), 0.0f, 0.99999994f)
-            : 0.5f;
-    return i;
-}
-
 ClusterHierarchy::SurfacePoint ClusterHierarchy::sample(const RadiosityMesh& mesh,
                                                         std::uint32_t node, const Vec3& towards,
                                                         Vec2 u) const {
@@ -178,65 +161,34 @@ ClusterHierarchy::SurfacePoint ClusterHierarchy::sample(const RadiosityMesh& mes
         const Element& e = mesh.elements[node];
         return pointOn(e.corners, e.normal, mesh.patches[e.patch], towards, u);
     }
+    // The member under u.x along the members' areas laid end to end, u.x then rescaled within it.
     const Cluster& c = cluster(node);
+    const double start = areaBefore_[c.firstMember];
+    const double target = start + u.x * (areaBefore_[c.firstMember + c.memberCount] - start);
+    const auto from = areaBefore_.begin() + c.firstMember + 1;
+    const auto found = std::upper_bound(from, from + c.memberCount - 1, target);
+    auto i = static_cast<std::uint32_t>(found - areaBefore_.begin()) - 1;
+    const double width = areaBefore_[i + 1] - areaBefore_[i];
+    u.x = width > 0
+              ? std::clamp(static_cast<float>((target - areaBefore_[i]) / width), 0.0f, 0.99999994f)
+              : 0.5f;
     const auto shapeOf = [&](std::uint32_t j) -> std::pair<const ShapeBlock&, std::size_t> {
         return {memberShapes_[j / ColorLanes::kLanes], j % ColorLanes::kLanes};
     };
-    const auto normalOf = [&](std::uint32_t j) {
-        const auto [m, lane] = shapeOf(j);
-        return Vec3(m.nx[lane], m.ny[lane], m.nz[lane]);
-    };
-    const auto centroidOf = [&](std::uint32_t j) {
-        const auto [m, lane] = shapeOf(j);
-        return Vec3(m.x[lane], m.y[lane], m.z[lane]);
-    };
-    // The member's corners, normal and patch from the members' arrays, not from its Element:
-    // those are near what the search read, where the Element is a cache miss of its own.
-    const auto pointOnMember = [&](std::uint32_t j, const Vec2& within) {
-        const auto [m, lane] = shapeOf(j);
-        return pointOn(memberCorners_[j], normalOf(j), mesh.patches[m.patch[lane]], towards,
-                       within);
-    };
-    // A cluster of at most kScannedMembers gives a member drawn by its projected area towards
-    // `towards` (its area times its front's cosine): a cluster exchanges light through its members
-    // by those. Drawn by area, the grazing members (the most often hidden) counted as much as the
-    // frontal ones, and the light between the Stanford bunny and the walls around it came 4% short
-    // (docs/BENCHMARKS.md). (Drawing by area and keeping a member by its cosine, for clusters of
-    // any size, took 50% more time on the 200k knot.)
-    if (c.memberCount <= kScannedMembers) {
-        std::array<float, kScannedMembers> weights;
-        double total = 0;
-        for (std::uint32_t k = 0; k < c.memberCount; ++k) {
-            const std::uint32_t j = c.firstMember + k;
-            const Vec3 toward = towards - centroidOf(j);
-            const auto [m, lane] = shapeOf(j);
-            weights[k] = std::max(0.0f, dot(normalOf(j), toward)) / length(toward) * m.area[lane];
-            total += weights[k];
-        }
-        if (total > 0) {
-            // The member under u.x along the weights laid end to end, u.x rescaled within it.
-            double target = u.x * total;
-            std::uint32_t k = 0;
-            while (k + 1 < c.memberCount && !(target < weights[k]))
-                target -= weights[k++];
-            while (!(weights[k] > 0))
-                --k;  // (past the last by rounding: the last with a weight)
-            u.x = std::clamp(static_cast<float>(target / weights[k]), 0.0f, 0.99999994f);
-            return pointOnMember(c.firstMember + k, u);
-        }
-    }
-    // A larger cluster (or one that faces away from `towards`): the member under u by area, or one
-    // after it whose front faces `towards` where one is near in the members' order (a closed
-    // model's outside, a room's inside), since the others send nothing that way.
-    std::uint32_t i = memberByArea(c, u.x);
     for (std::uint32_t k = 0; k < std::min(kFacingSearch, c.memberCount); ++k) {
         const std::uint32_t j = c.firstMember + (i - c.firstMember + k) % c.memberCount;
-        if (dot(normalOf(j), towards - centroidOf(j)) > 0) {
+        const auto [m, lane] = shapeOf(j);
+        if (dot(Vec3(m.nx[lane], m.ny[lane], m.nz[lane]),
+                towards - Vec3(m.x[lane], m.y[lane], m.z[lane])) > 0) {
             i = j;
             break;
         }
     }
-    return pointOnMember(i, u);
+    // The member's corners, normal and patch from the members' arrays, not from its Element:
+    // those are near what the search read, where the Element is a cache miss of its own.
+    const auto [m, lane] = shapeOf(i);
+    return pointOn(memberCorners_[i], Vec3(m.nx[lane], m.ny[lane], m.nz[lane]),
+                   mesh.patches[m.patch[lane]], towards, u);
 }
 
 }  // namespace lancer

@@ -135,12 +135,10 @@ public:
         return {(nx * tx + ny * ty + nz * tz) / std::sqrt(d2), d2};
     }
 
-    // A point of the node for a visibility ray towards `towards`, on the side facing it, and
-    // that element's patch. An element's is uniform by area (from `u`). A cluster of a few members
-    // gives one on a member drawn by its projected area towards `towards` (its area times its
-    // front's cosine), since a cluster exchanges light through its members by those; a larger one
-    // one drawn by area, moved to a member facing `towards` where one is near in the members'
-    // order (a closed model's outside, a room's inside).
+    // A point of the node for a visibility ray towards `towards` (uniform by area over its
+    // elements, from `u`), on the side facing it, and that element's patch. A cluster's point is
+    // taken on a member whose front faces `towards` where one is near in the members' order (a
+    // closed model's outside, a room's inside), since the others send nothing that way.
     struct SurfacePoint {
         Vec3 p;
         Vec3 n;  // the element's normal, turned to the side facing `towards`
@@ -160,9 +158,6 @@ private:
         Lanes area;
         std::array<std::uint32_t, ColorLanes::kLanes> patch;
     };
-    // The member of a cluster under u along its members' areas laid end to end, u rescaled to
-    // where it falls within that member's.
-    std::uint32_t memberByArea(const Cluster& c, float& u) const;
     std::size_t blockCount() const {
         return (members_.size() + ColorLanes::kLanes - 1) / ColorLanes::kLanes;
     }

@@ -8,12 +8,9 @@
 #include <cmath>
 #include <cstring>
 
-#include "DirectionChiSquare.h"
 #include "RadiosityTestSupport.h"
 #include "radiosity/FormFactor.h"
 #include "radiosity/HierarchicalRadiosity.h"
-#include "sampling/Sampling.h"
-#include "sampling/StratifiedPoint.h"
 #include "util/CpuFeatures.h"
 
 namespace lancer::test {
@@ -82,60 +79,6 @@ TEST(HierarchicalClusteringTest, EveryPatchIsInOneClusterTree) {
             for (const Vec3& corner : solver.mesh().elements[e].corners)
                 EXPECT_LE(length(corner - cluster.center), cluster.radius * 1.0001f);
     }
-}
-
-TEST(HierarchicalClusteringTest, AClustersVisibilityPointsComeByItsMembersProjectedAreas) {
-    // The closed box's top cluster (48 members, every wall's inside facing the point) sampled
-    // towards a point off its centre: each member drawn in proportion to its area times its
-    // cosine towards the point (where a draw by area gave every member of a wall the same share,
-    // grazing or not), the point on that member and facing it. Chi-square over the members.
-    Scene scene = tiledBox(2);
-    HierarchicalRadiosity solver(scene);
-    const RadiosityMesh& mesh = solver.mesh();
-    const ClusterHierarchy& clusters = solver.clusters();
-    const auto members = clusters.members(clusters.cluster(clusters.top()));
-    const Vec3 towards(0.2f, 0.7f, 0.4f);
-    std::vector<double> expected;
-    double total = 0;
-    for (std::uint32_t e : members) {
-        const Element& element = mesh.elements[e];
-        const Vec3 toward = normalize(towards - element.centroid);
-        expected.push_back(element.area * std::max(0.0f, dot(element.normal, toward)));
-        total += expected.back();
-    }
-    ASSERT_GT(total, 0);
-    constexpr int kSamples = 48000;
-    std::vector<int> observed(members.size(), 0);
-    for (int k = 0; k < kSamples; ++k) {
-        const ClusterHierarchy::SurfacePoint s = clusters.sample(
-            mesh, clusters.top(), towards, stratifiedPoint(0, 1, hashValues(k, 0x7e57u)));
-        EXPECT_GT(dot(s.n, towards - s.p), 0);
-        // The member whose triangle holds the point (on its plane, inside its edges).
-        std::size_t found = members.size();
-        for (std::size_t i = 0; i < members.size(); ++i) {
-            const Element& e = mesh.elements[members[i]];
-            bool inside = std::abs(dot(e.normal, s.p - e.corners[0])) < 1e-5f;
-            for (std::size_t j = 0; j < 3 && inside; ++j)
-                inside = dot(cross(e.corners[(j + 1) % 3] - e.corners[j], s.p - e.corners[j]),
-                             e.normal) >= -1e-6f;
-            if (inside) found = i;
-        }
-        ASSERT_LT(found, members.size()) << s.p.x << " " << s.p.y << " " << s.p.z;
-        ++observed[found];
-    }
-    double chiSquare = 0;
-    int bins = 0;
-    for (std::size_t i = 0; i < members.size(); ++i) {
-        const double count = kSamples * expected[i] / total;
-        if (count == 0) {
-            EXPECT_EQ(observed[i], 0) << "a member facing away was drawn";
-            continue;
-        }
-        chiSquare += (observed[i] - count) * (observed[i] - count) / count;
-        ++bins;
-    }
-    // At the 0.1% level; drawn by area, the statistic is in the thousands.
-    EXPECT_GT(upperIncompleteGamma((bins - 1) / 2.0, chiSquare / 2), 1e-3) << chiSquare;
 }
 
 TEST(HierarchicalClusteringTest, TheClustersHoldingARootAreItsAncestors) {
