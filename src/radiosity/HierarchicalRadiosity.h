@@ -8,6 +8,7 @@
 #include <optional>
 #include <vector>
 
+#include "math/ColorArrays.h"
 #include "radiosity/ClusterHierarchy.h"
 #include "radiosity/FormFactor.h"
 #include "radiosity/GlossyTransport.h"
