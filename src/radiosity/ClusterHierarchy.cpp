@@ -40,14 +40,11 @@ ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::u
     clusters_.reserve(members_.size() - 1);
     build(mesh, 0, static_cast<std::uint32_t>(members_.size()), Element::kNone);
     areaBefore_.resize(members_.size() + 1, 0);
+    memberShapes_.assign(blockCount(), ShapeBlock{});
     for (std::size_t i = 0; i < members_.size(); ++i) {
         const Element& e = mesh.elements[members_[i]];
         areaBefore_[i + 1] = areaBefore_[i] + e.area;
         memberCorners_.push_back(e.corners);
-    }
-    memberShapes_.assign(blockCount(), ShapeBlock{});
-    for (std::size_t i = 0; i < members_.size(); ++i) {
-        const Element& e = mesh.elements[members_[i]];
         ShapeBlock& block = memberShapes_[i / ColorLanes::kLanes];
         const std::size_t lane = i % ColorLanes::kLanes;
         block.x[lane] = e.centroid.x;
