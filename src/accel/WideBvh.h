@@ -153,6 +153,12 @@ private:
     LANCER_AVX2_TARGET void traverseAvx2(const Ray& ray, const float& tMax, VisitLeaf&& visitLeaf,
                                          PrefetchLeaf&& prefetchLeaf) const;
 #endif
+    // The traversal with the baseline box test, out of line so that traverse, which only picks
+    // a kernel, builds no frame of its own and can be inlined into its callers.
+    template <bool kNearestFirst, typename VisitLeaf, typename PrefetchLeaf>
+    LANCER_NEVER_INLINE void traverseBaseline(const Ray& ray, const float& tMax,
+                                              VisitLeaf&& visitLeaf,
+                                              PrefetchLeaf&& prefetchLeaf) const;
     // The traversal with a given box test, inlined into each of the above.
     template <bool kNearestFirst, typename BoxSetup, typename VisitLeaf, typename PrefetchLeaf>
     LANCER_ALWAYS_INLINE void traverseWith(const Ray& ray, const float& tMax, VisitLeaf&& visitLeaf,
@@ -203,20 +209,30 @@ LANCER_AVX2_TARGET void WideBvh::traverseAvx2(const Ray& ray, const float& tMax,
 #endif
 
 template <bool kNearestFirst, typename VisitLeaf, typename PrefetchLeaf>
+void WideBvh::traverseBaseline(const Ray& ray, const float& tMax, VisitLeaf&& visitLeaf,
+                               PrefetchLeaf&& prefetchLeaf) const {
+    traverseWith<kNearestFirst, RayBoxSetup>(ray, tMax, visitLeaf, prefetchLeaf);
+}
+
+template <bool kNearestFirst, typename VisitLeaf, typename PrefetchLeaf>
 void WideBvh::traverse(const Ray& ray, const float& tMax, VisitLeaf&& visitLeaf,
                        PrefetchLeaf&& prefetchLeaf) const {
     // A ray of NaN or infinite numbers meets nothing; in the slab test it would meet every box,
     // the unused slots' empty ones too (whose child 0 is the root: a loop). x * 0 is 0 for a
-    // finite x and NaN otherwise: one branch for the six numbers.
-    const Vec3 o = ray.origin * 0.0f, d = ray.direction * 0.0f;
-    if ((o.x + o.y) + (o.z + d.x) + (d.y + d.z) != 0) return;
+    // finite x and NaN otherwise: the six numbers in two overlapping SIMD rows, one branch.
+    static_assert(sizeof(Ray) == 6 * sizeof(float));
+    const float* numbers = &ray.origin.x;
+    const Float4 zero(0.0f);
+    if (ne(Float4::loadUnaligned(numbers) * zero + Float4::loadUnaligned(numbers + 2) * zero,
+           zero) != 0)
+        return;
 #if LANCER_HAS_AVX2_TARGET
     if (CpuFeatures::avx2()) {
         traverseAvx2<kNearestFirst>(ray, tMax, visitLeaf, prefetchLeaf);
         return;
     }
 #endif
-    traverseWith<kNearestFirst, RayBoxSetup>(ray, tMax, visitLeaf, prefetchLeaf);
+    traverseBaseline<kNearestFirst>(ray, tMax, visitLeaf, prefetchLeaf);
 }
 
 template <bool kNearestFirst, typename BoxSetup, typename VisitLeaf, typename PrefetchLeaf>

@@ -16,6 +16,16 @@
 #define LANCER_ALWAYS_INLINE inline
 #endif
 
+// Keeps a function out of line, so that a small caller that may not need it is not burdened with
+// its frame.
+#if defined(__GNUC__)
+#define LANCER_NEVER_INLINE [[gnu::noinline]]
+#elif defined(_MSC_VER)
+#define LANCER_NEVER_INLINE __declspec(noinline)
+#else
+#define LANCER_NEVER_INLINE
+#endif
+
 namespace lancer {
 
 constexpr float kPi = std::numbers::pi_v<float>;

@@ -41,6 +41,17 @@ public:
 #endif
         return r;
     }
+    // From any address.
+    static Float4 loadUnaligned(const float* p) {
+        Float4 r;
+#ifdef LANCER_FLOAT4_SSE
+        r.v_ = _mm_loadu_ps(p);
+#else
+        for (int i = 0; i < 4; ++i)
+            r.v_[i] = p[i];
+#endif
+        return r;
+    }
     void store(float* p) const {
 #ifdef LANCER_FLOAT4_SSE
         _mm_storeu_ps(p, v_);

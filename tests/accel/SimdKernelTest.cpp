@@ -126,5 +126,25 @@ TEST_F(SimdKernelTest, RaysOfNotANumberEndWithoutAHit) {
     }
 }
 
+// The traversal checks the ray's six numbers at once: each of them, NaN or infinite, ends it,
+// where the same ray with that number finite meets the model.
+TEST_F(SimdKernelTest, ANotFiniteNumberAnywhereInTheRayEndsItWithoutAHit) {
+    const std::shared_ptr<const Mesh> mesh = bunny();
+    const Vec3 centre = mesh->bounds().centroid();
+    const Ray towardsCentre{centre - Vec3(0, 0, 1), Vec3(0, 0, 1)};
+    for (const bool baseline : {true, false}) {
+        CpuFeatures::useBaselineOnly(baseline);
+        ASSERT_TRUE(mesh->occluded(towardsCentre, kInfinity));
+        for (int number = 0; number < 6; ++number)
+            for (const float bad :
+                 {std::numeric_limits<float>::quiet_NaN(), kInfinity, -kInfinity}) {
+                Ray ray = towardsCentre;
+                (number < 3 ? ray.origin : ray.direction)[number % 3] = bad;
+                EXPECT_FALSE(mesh->cross(ray, kInfinity).has_value()) << number << " " << bad;
+                EXPECT_FALSE(mesh->occluded(ray, kInfinity)) << number << " " << bad;
+            }
+    }
+}
+
 }  // namespace
 }  // namespace lancer::test
