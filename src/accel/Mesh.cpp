@@ -128,7 +128,9 @@ std::optional<SurfaceCrossing> Mesh::cross(const Ray& ray, float tMax) const {
     // Only barycentrics and t during traversal; the hit record is filled once, for the nearest.
     TriangleIntersection nearest{};
     std::uint32_t nearestIndex = 0;
-    const auto intersectLeaf = [&](std::uint32_t firstPack, std::uint32_t count, float& tFar) {
+    // Inlined into each traversal kernel (WideBvh), and compiled with its instructions.
+    const auto intersectLeaf = [&](std::uint32_t firstPack, std::uint32_t count,
+                                   float& tFar) LANCER_INLINE_LAMBDA {
         bool found = false;
         for (std::uint32_t p = 0; p < packCount(count); ++p) {
             const TrianglePack& pack = packs_[firstPack + p];
@@ -158,7 +160,8 @@ Hit Mesh::record(const Ray&, const SurfaceCrossing& crossing) const {
 bool Mesh::occluded(const Ray& ray, float tMax) const {
     const TriangleIntersector intersector(ray);
     if (!intersector.canHit()) return false;
-    const auto occludedLeaf = [&](std::uint32_t firstPack, std::uint32_t count, float tFar) {
+    const auto occludedLeaf = [&](std::uint32_t firstPack, std::uint32_t count,
+                                  float tFar) LANCER_INLINE_LAMBDA {
         for (std::uint32_t p = 0; p < packCount(count); ++p)
             if (intersector.intersect(packs_[firstPack + p], leafLanes(p, count), tFar).lanes != 0)
                 return true;

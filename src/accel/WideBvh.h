@@ -306,7 +306,7 @@ void WideBvh::traverseWith(const Ray& ray, const float& tMax, VisitLeaf&& visitL
 template <typename F, typename P>
 bool WideBvh::intersect(const Ray& ray, float& tMax, F&& intersectLeaf, P&& prefetchLeaf) const {
     bool hit = false;
-    const auto visitLeaf = [&](std::uint32_t leaf, std::uint32_t count) {
+    const auto visitLeaf = [&](std::uint32_t leaf, std::uint32_t count) LANCER_INLINE_LAMBDA {
         if (intersectLeaf(leaf, count, tMax)) hit = true;
         return false;
     };
@@ -317,7 +317,7 @@ bool WideBvh::intersect(const Ray& ray, float& tMax, F&& intersectLeaf, P&& pref
 template <typename F, typename P>
 bool WideBvh::occluded(const Ray& ray, float tMax, F&& occludedLeaf, P&& prefetchLeaf) const {
     bool blocked = false;
-    const auto visitLeaf = [&](std::uint32_t leaf, std::uint32_t count) {
+    const auto visitLeaf = [&](std::uint32_t leaf, std::uint32_t count) LANCER_INLINE_LAMBDA {
         blocked = occludedLeaf(leaf, count, tMax);
         return blocked;
     };

@@ -16,6 +16,15 @@
 #define LANCER_ALWAYS_INLINE inline
 #endif
 
+// The same for a lambda, written after its parameter list: for the leaf tests that a traversal
+// calls, which it then compiles for its own instruction set, with no call, spill or AVX-to-SSE
+// transition between them.
+#if defined(__GNUC__)
+#define LANCER_INLINE_LAMBDA __attribute__((always_inline))
+#else
+#define LANCER_INLINE_LAMBDA
+#endif
+
 // Keeps a function out of line, so that a small caller that may not need it is not burdened with
 // its frame.
 #if defined(__GNUC__)
