@@ -30,16 +30,13 @@ public:
             lane = v;
 #endif
     }
-    // From 16-byte aligned memory.
+    // From 16-byte aligned memory (which SSE code can read as an operand of the arithmetic).
     static Float4 load(const float* p) {
-        Float4 r;
 #ifdef LANCER_FLOAT4_SSE
-        r.v_ = _mm_load_ps(p);
+        return Float4(_mm_load_ps(p));
 #else
-        for (int i = 0; i < 4; ++i)
-            r.v_[i] = p[i];
+        return loadUnaligned(p);
 #endif
-        return r;
     }
     // From any address.
     static Float4 loadUnaligned(const float* p) {
