@@ -41,6 +41,7 @@ ClusterHierarchy::ClusterHierarchy(const RadiosityMesh& mesh, std::vector<std::u
     build(mesh, 0, static_cast<std::uint32_t>(members_.size()), Element::kNone);
     areaBefore_.resize(members_.size() + 1, 0);
     memberShapes_.assign(blockCount(), ShapeBlock{});
+    memberCorners_.reserve(members_.size());
     for (std::size_t i = 0; i < members_.size(); ++i) {
         const Element& e = mesh.elements[members_[i]];
         areaBefore_[i + 1] = areaBefore_[i] + e.area;
