@@ -163,6 +163,11 @@ private:
     template <bool kNearestFirst, typename BoxSetup, typename VisitLeaf, typename PrefetchLeaf>
     LANCER_ALWAYS_INLINE void traverseWith(const Ray& ray, const float& tMax, VisitLeaf&& visitLeaf,
                                            PrefetchLeaf&& prefetchLeaf) const;
+    // The same for a tree of one node, whose children are all leaves (a scene of a few shapes):
+    // one box test, then the leaves met in order, with no stack to keep.
+    template <bool kNearestFirst, typename BoxSetup, typename VisitLeaf>
+    LANCER_ALWAYS_INLINE void visitRootLeaves(const BoxSetup& setup, const float& tMax,
+                                              VisitLeaf&& visitLeaf) const;
 
     Bounds3 bounds_;
     std::vector<WideBvhNode> nodes_;
@@ -240,6 +245,10 @@ void WideBvh::traverseWith(const Ray& ray, const float& tMax, VisitLeaf&& visitL
                            PrefetchLeaf&& prefetchLeaf) const {
     if (nodes_.empty()) return;
     const BoxSetup setup(ray);
+    if (nodes_.size() == 1) {
+        visitRootLeaves<kNearestFirst>(setup, tMax, visitLeaf);
+        return;
+    }
     const WideBvhNode* nodes = nodes_.data();
     StackEntry stack[kStackSize];
     int stackSize = 0;
@@ -300,6 +309,32 @@ void WideBvh::traverseWith(const Ray& ray, const float& tMax, VisitLeaf&& visitL
                     std::swap(stack[j - 1], stack[j]);
         }
         current = stack[--stackSize];
+    }
+}
+
+template <bool kNearestFirst, typename BoxSetup, typename VisitLeaf>
+void WideBvh::visitRootLeaves(const BoxSetup& setup, const float& tMax,
+                              VisitLeaf&& visitLeaf) const {
+    const WideBvhNode& root = nodes_.front();
+    float tNear[WideBvhNode::kWidth];
+    int slots[WideBvhNode::kWidth];
+    int count = 0;
+    for (int mask = setup.hits(root, tMax, tNear); mask != 0; mask &= mask - 1) {
+        int i = count++;
+        slots[i] = std::countr_zero(static_cast<unsigned>(mask));
+        if (kNearestFirst) {
+            for (; i > 0 && tNear[slots[i]] < tNear[slots[i - 1]]; --i)
+                std::swap(slots[i], slots[i - 1]);
+        }
+    }
+    for (int i = 0; i < count; ++i) {
+        const int slot = slots[i];
+        // A closer hit found since the box test may have put the leaf out of reach.
+        if (i > 0 && tNear[slot] > tMax * kSlabWidening) {
+            if (kNearestFirst) return;  // and every one after it
+            continue;
+        }
+        if (visitLeaf(root.child[slot], root.primitiveCount[slot])) return;
     }
 }
 

@@ -1,0 +1,122 @@
+// The scene's own search (Scene::cross and occluded) against every shape tested one by one: its
+// hierarchy over the bounded shapes (one node for a few of them, a tree for more) and the planes
+// outside it.
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <random>
+#include <vector>
+
+#include "BvhTestSupport.h"
+#include "geometry/Plane.h"
+#include "geometry/Shape.h"
+#include "geometry/Sphere.h"
+#include "geometry/Triangle.h"
+#include "scene/Scene.h"
+
+namespace lancer::test {
+namespace {
+
+#ifdef LANCER_SANITIZED
+constexpr int kRayCount = 5000;
+#else
+constexpr int kRayCount = 20000;
+#endif
+
+// A scene of `count` shapes in the unit cube, lone triangles and spheres taking turns (a triangle
+// first), with a plane under them when asked; `shapes` gets them in the order they were added.
+Scene makeScene(int count, bool withPlane, std::uint32_t seed, std::vector<const Shape*>& shapes) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(0, 1);
+    Scene scene;
+    const auto add = [&](std::unique_ptr<Shape> shape) {
+        shapes.push_back(shape.get());
+        scene.addShape(std::move(shape));
+    };
+    for (int i = 0; i < count; ++i) {
+        const Vec3 c(u(rng), u(rng), u(rng));
+        const float size = 0.3f * u(rng) + 0.01f;
+        if (i % 2 == 0) {
+            add(std::make_unique<Triangle>(std::array<Vec3, 3>{c + size * randomDirection(rng),
+                                                               c + size * randomDirection(rng),
+                                                               c + size * randomDirection(rng)},
+                                           nullptr));
+        } else {
+            add(std::make_unique<Sphere>(c, 0.3f * size, nullptr));
+        }
+    }
+    if (withPlane) add(std::make_unique<Plane>(Vec3(0, 0.1f, 0), Vec3(0, 1, 0), nullptr));
+    scene.buildAccelerationStructure();
+    return scene;
+}
+
+// The nearest crossing of every shape tested one by one (the first added, of several at exactly
+// the nearest t).
+std::optional<SceneCrossing> bruteForce(const std::vector<const Shape*>& shapes, const Ray& ray,
+                                        float tMax) {
+    std::optional<SceneCrossing> nearest;
+    for (const Shape* shape : shapes) {
+        if (const std::optional<SurfaceCrossing> crossing = shape->cross(ray, tMax)) {
+            nearest = SceneCrossing{shape, *crossing};
+            tMax = static_cast<float>(crossing->t);
+        }
+    }
+    return nearest;
+}
+
+void expectSceneMatchesBruteForce(int count, bool withPlane, std::uint32_t seed) {
+    std::vector<const Shape*> shapes;
+    const Scene scene = makeScene(count, withPlane, seed, shapes);
+    // Half the rays in random directions, half aimed at a point in a random shape's box.
+    std::vector<Ray> rays = randomRays(Bounds3(Vec3(0), Vec3(1)), kRayCount / 2, seed + 1);
+    std::mt19937 rng(seed + 2);
+    std::uniform_real_distribution<float> u(0, 1);
+    std::uniform_int_distribution<std::size_t> pickShape(0, static_cast<std::size_t>(count) - 1);
+    while (rays.size() < static_cast<std::size_t>(kRayCount)) {
+        const Vec3 origin = Vec3(0.5f) + 2.0f * randomDirection(rng);
+        rays.push_back({origin, randomPointIn(shapes[pickShape(rng)]->bounds(), rng) - origin});
+    }
+    int hits = 0;
+    for (const Ray& ray : rays) {
+        const float tMax = u(rng) < 0.5f ? kInfinity : 3 * u(rng);
+        const std::optional<SceneCrossing> expected = bruteForce(shapes, ray, tMax);
+        const std::optional<SceneCrossing> actual = scene.cross(ray, tMax);
+        ASSERT_EQ(actual.has_value(), expected.has_value()) << describe(ray);
+        ASSERT_EQ(scene.occluded(ray, tMax), expected.has_value()) << describe(ray);
+        if (!expected) continue;
+        ++hits;
+        // The same t to the bit, and the same numbers of the same shape, unless two shapes are
+        // crossed at exactly that t.
+        ASSERT_EQ(actual->crossing.t, expected->crossing.t) << describe(ray);
+        if (actual->shape != expected->shape) continue;
+        EXPECT_EQ(actual->crossing.tShape, expected->crossing.tShape) << describe(ray);
+        EXPECT_EQ(actual->crossing.primitive, expected->crossing.primitive) << describe(ray);
+        EXPECT_EQ(actual->crossing.b0, expected->crossing.b0) << describe(ray);
+        EXPECT_EQ(actual->crossing.b1, expected->crossing.b1) << describe(ray);
+        EXPECT_EQ(actual->crossing.b2, expected->crossing.b2) << describe(ray);
+    }
+    // Enough rays meet something for the comparison to mean something.
+    EXPECT_GT(hits, kRayCount / 8);
+}
+
+// Up to eight bounded shapes make a hierarchy of one node.
+TEST(SceneTraversal, AFewShapesMatchBruteForce) {
+    expectSceneMatchesBruteForce(3, false, 1);
+    expectSceneMatchesBruteForce(8, false, 2);
+}
+
+TEST(SceneTraversal, ManyShapesMatchBruteForce) {
+    expectSceneMatchesBruteForce(200, false, 3);
+}
+
+TEST(SceneTraversal, ShapesOverAPlaneMatchBruteForce) {
+    expectSceneMatchesBruteForce(5, true, 4);
+    expectSceneMatchesBruteForce(60, true, 5);
+}
+
+}  // namespace
+}  // namespace lancer::test
