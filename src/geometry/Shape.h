@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 
@@ -48,6 +49,10 @@ public:
     // Whether anything is hit with 0 < t < tMax: shadow rays, which need no hit record and can
     // stop at the first hit found.
     virtual bool occluded(const Ray& ray, float tMax) const { return cross(ray, tMax).has_value(); }
+    // The corners of a shape that is one triangle crossed as Triangle::intersect crosses them, in
+    // that order: a scene may test it itself, with the ray's set-up for triangles made once for
+    // all it meets (the same test, so the same crossings). Nothing for any other shape.
+    virtual std::optional<std::array<Vec3, 3>> loneTriangle() const { return std::nullopt; }
 
     // Whether the surface is closed around a volume with its normals pointing out (a sphere, a
     // box, a closed cylinder, a closed mesh...): a solid, which CSG can combine.

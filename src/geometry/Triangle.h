@@ -26,6 +26,7 @@ public:
     using Shape::intersect;  // beside the static test of a triangle's vertices below
     std::optional<SurfaceCrossing> cross(const Ray& ray, float tMax) const override;
     Hit record(const Ray& ray, const SurfaceCrossing& crossing) const override;
+    std::optional<std::array<Vec3, 3>> loneTriangle() const override { return vertices(); }
     Bounds3 bounds() const override;
     bool emitsOnBothSides() const override { return false; }
     float area(std::uint32_t primitive) const override;

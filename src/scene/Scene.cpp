@@ -3,6 +3,7 @@
 #include "accel/Bvh.h"
 #include "accel/WideBvh.h"
 #include "geometry/Shape.h"
+#include "geometry/TriangleIntersector.h"
 #include "lights/EnvironmentLight.h"
 #include "lights/Light.h"
 #include "materials/Material.h"
@@ -57,6 +58,16 @@ void Scene::buildAccelerationStructure() {
     // A leaf is known by its first shape in that order.
     bvh_ =
         std::make_unique<WideBvh>(binary, [](std::uint32_t first, std::uint32_t) { return first; });
+
+    loneTrianglePack_.assign(boundedShapes_.size(), kNotALoneTriangle);
+    loneTriangles_.clear();
+    for (std::size_t k = 0; k < boundedShapes_.size(); ++k) {
+        if (const std::optional<std::array<Vec3, 3>> corners = boundedShapes_[k]->loneTriangle()) {
+            loneTrianglePack_[k] = static_cast<std::uint32_t>(loneTriangles_.size());
+            TrianglePack& pack = loneTriangles_.emplace_back();  // zeros in the other lanes
+            pack.set(0, (*corners)[0], (*corners)[1], (*corners)[2]);
+        }
+    }
 }
 
 void Scene::addLight(std::unique_ptr<Light> light) {
@@ -94,11 +105,12 @@ std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {
 std::optional<SceneCrossing> Scene::cross(const Ray& ray, float tMax) const {
     // The candidates only cross; the caller records the nearest.
     std::optional<SceneCrossing> nearest;
+    std::optional<TriangleIntersector> intersector;
     const auto crossLeaf = [&](std::uint32_t first, std::uint32_t count, float& tFar) {
         bool found = false;
         for (std::uint32_t k = first; k < first + count; ++k)
             if (const std::optional<SurfaceCrossing> crossing =
-                    boundedShapes_[k]->cross(ray, tFar)) {
+                    crossBounded(k, ray, tFar, intersector)) {
                 nearest = SceneCrossing{boundedShapes_[k].get(), *crossing};
                 tFar = static_cast<float>(crossing->t);
                 found = true;
@@ -115,6 +127,19 @@ std::optional<SceneCrossing> Scene::cross(const Ray& ray, float tMax) const {
     return nearest;
 }
 
+std::optional<SurfaceCrossing> Scene::crossBounded(
+    std::uint32_t k, const Ray& ray, float tMax,
+    std::optional<TriangleIntersector>& intersector) const {
+    const std::uint32_t pack = loneTrianglePack_[k];
+    if (pack == kNotALoneTriangle) return boundedShapes_[k]->cross(ray, tMax);
+    // What Triangle::cross does, but for the set-up.
+    if (!intersector) intersector.emplace(ray);
+    if (!intersector->canHit()) return std::nullopt;
+    const PackHits hits = intersector->intersect(loneTriangles_[pack], 1, tMax);
+    if (hits.lanes == 0) return std::nullopt;
+    return SurfaceCrossing{hits.t[0], hits.t[0], 0, hits.b0[0], hits.b1[0], hits.b2[0]};
+}
+
 Hit Scene::record(const Ray& ray, const SceneCrossing& crossing) const {
     return crossing.shape->record(ray, crossing.crossing);
 }
@@ -123,9 +148,14 @@ bool Scene::occluded(const Ray& ray, float tMax) const {
     if (hasCutOuts_) return intersect(ray, tMax).has_value();  // a blocker may be cut away
     for (const auto& shape : unboundedShapes_)
         if (shape->occluded(ray, tMax)) return true;
+    std::optional<TriangleIntersector> intersector;
     const auto occludedLeaf = [&](std::uint32_t first, std::uint32_t count, float tFar) {
-        for (std::uint32_t k = first; k < first + count; ++k)
-            if (boundedShapes_[k]->occluded(ray, tFar)) return true;
+        for (std::uint32_t k = first; k < first + count; ++k) {
+            const bool blocks = loneTrianglePack_[k] == kNotALoneTriangle
+                                    ? boundedShapes_[k]->occluded(ray, tFar)
+                                    : crossBounded(k, ray, tFar, intersector).has_value();
+            if (blocks) return true;
+        }
         return false;
     };
     return bvh_->occluded(ray, tMax, occludedLeaf, [](std::uint32_t) {});

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/Hit.h"
+#include "geometry/TrianglePack.h"
 #include "math/Bounds3.h"
 #include "math/Color.h"
 #include "math/Ray.h"
@@ -17,6 +18,7 @@
 namespace lancer {
 
 class WideBvh;
+class TriangleIntersector;
 class EnvironmentLight;
 class Light;
 class Material;
@@ -103,6 +105,12 @@ public:
     bool hasGlossyMaterial() const { return hasGlossyMaterial_; }
 
 private:
+    // Bounded shape k's crossing. A lone triangle is tested here, with the ray's set-up for
+    // triangles made in `intersector` at the first one the ray meets.
+    std::optional<SurfaceCrossing> crossBounded(
+        std::uint32_t k, const Ray& ray, float tMax,
+        std::optional<TriangleIntersector>& intersector) const;
+
     RenderSettings settings_;
     std::unique_ptr<const Camera> camera_;
     Color background_{0};
@@ -112,6 +120,11 @@ private:
     std::vector<std::unique_ptr<Shape>> boundedShapes_;  // in the BVH's leaf order once built
     std::vector<std::unique_ptr<Shape>> unboundedShapes_;
     std::unique_ptr<WideBvh> bvh_;  // over the bounded shapes
+    // For each bounded shape, the pack holding it (in lane 0) when it is a lone triangle
+    // (Shape::loneTriangle), else kNotALoneTriangle.
+    static constexpr std::uint32_t kNotALoneTriangle = ~0u;
+    std::vector<std::uint32_t> loneTrianglePack_;
+    std::vector<TrianglePack> loneTriangles_;
     bool hasTransmissiveMaterial_ = false;
     bool hasCutOuts_ = false;
     bool hasGlossyMaterial_ = false;

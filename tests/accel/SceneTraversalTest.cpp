@@ -1,6 +1,6 @@
 // The scene's own search (Scene::cross and occluded) against every shape tested one by one: its
-// hierarchy over the bounded shapes (one node for a few of them, a tree for more) and the planes
-// outside it.
+// hierarchy over the bounded shapes (one node for a few of them, a tree for more), the lone
+// triangles it tests itself with one set-up per ray, and the planes outside the hierarchy.
 
 #include <gtest/gtest.h>
 
@@ -116,6 +116,25 @@ TEST(SceneTraversal, ManyShapesMatchBruteForce) {
 TEST(SceneTraversal, ShapesOverAPlaneMatchBruteForce) {
     expectSceneMatchesBruteForce(5, true, 4);
     expectSceneMatchesBruteForce(60, true, 5);
+}
+
+// The crossing of a lone triangle the scene tests itself is the triangle's own, the record too.
+TEST(SceneTraversal, ALoneTriangleIsRecordedByItsShape) {
+    std::vector<const Shape*> shapes;
+    const Scene scene = makeScene(1, false, 6, shapes);
+    const std::array<Vec3, 3> corners = *shapes[0]->loneTriangle();
+    const Vec3 centre = (corners[0] + corners[1] + corners[2]) / 3.0f;
+    const Ray ray{centre + Vec3(0.1f, 0.2f, 2), Vec3(-0.1f, -0.2f, -2)};
+    const std::optional<SceneCrossing> crossing = scene.cross(ray, kInfinity);
+    ASSERT_TRUE(crossing.has_value());
+    EXPECT_EQ(crossing->shape, shapes[0]);
+    const std::optional<Hit> own = shapes[0]->intersect(ray, kInfinity);
+    ASSERT_TRUE(own.has_value());
+    const Hit hit = scene.record(ray, *crossing);
+    EXPECT_EQ(hit.t, own->t);
+    EXPECT_EQ(hit.p, own->p);
+    EXPECT_EQ(hit.ng, own->ng);
+    EXPECT_EQ(hit.shape, shapes[0]);
 }
 
 }  // namespace
