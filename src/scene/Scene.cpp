@@ -1,5 +1,9 @@
 #include "scene/Scene.h"
 
+#include <algorithm>
+#include <type_traits>
+#include <variant>
+
 #include "accel/Bvh.h"
 #include "accel/WideBvh.h"
 #include "geometry/Shape.h"
@@ -61,6 +65,9 @@ void Scene::buildAccelerationStructure() {
 
     loneTrianglePack_.assign(boundedShapes_.size(), kNotALoneTriangle);
     loneTriangles_.clear();
+    // With a single lone triangle there is no set-up to share: it tests itself.
+    const auto isLoneTriangle = [](const auto& shape) { return shape->loneTriangle().has_value(); };
+    if (std::count_if(boundedShapes_.begin(), boundedShapes_.end(), isLoneTriangle) < 2) return;
     for (std::size_t k = 0; k < boundedShapes_.size(); ++k) {
         if (const std::optional<std::array<Vec3, 3>> corners = boundedShapes_[k]->loneTriangle()) {
             loneTrianglePack_[k] = static_cast<std::uint32_t>(loneTriangles_.size());
@@ -103,14 +110,31 @@ std::optional<Hit> Scene::intersect(const Ray& ray, float tMax) const {
 }
 
 std::optional<SceneCrossing> Scene::cross(const Ray& ray, float tMax) const {
+    return loneTriangles_.empty() ? crossWith<false>(ray, tMax) : crossWith<true>(ray, tMax);
+}
+
+// The ray's set-up for the lone triangles, made at the first one the ray meets; nothing when the
+// scene tests none itself.
+template <bool kLoneTriangles>
+using LoneTriangleSetUp =
+    std::conditional_t<kLoneTriangles, std::optional<TriangleIntersector>, std::monostate>;
+
+template <bool kLoneTriangles>
+std::optional<SceneCrossing> Scene::crossWith(const Ray& ray, float tMax) const {
     // The candidates only cross; the caller records the nearest.
     std::optional<SceneCrossing> nearest;
-    std::optional<TriangleIntersector> intersector;
+    LoneTriangleSetUp<kLoneTriangles> intersector;
+    const auto crossShape = [&](std::uint32_t k, float tFar) {
+        if constexpr (kLoneTriangles) {
+            if (loneTrianglePack_[k] != kNotALoneTriangle)
+                return crossLoneTriangle(loneTrianglePack_[k], ray, tFar, intersector);
+        }
+        return boundedShapes_[k]->cross(ray, tFar);
+    };
     const auto crossLeaf = [&](std::uint32_t first, std::uint32_t count, float& tFar) {
         bool found = false;
         for (std::uint32_t k = first; k < first + count; ++k)
-            if (const std::optional<SurfaceCrossing> crossing =
-                    crossBounded(k, ray, tFar, intersector)) {
+            if (const std::optional<SurfaceCrossing> crossing = crossShape(k, tFar)) {
                 nearest = SceneCrossing{boundedShapes_[k].get(), *crossing};
                 tFar = static_cast<float>(crossing->t);
                 found = true;
@@ -127,12 +151,9 @@ std::optional<SceneCrossing> Scene::cross(const Ray& ray, float tMax) const {
     return nearest;
 }
 
-std::optional<SurfaceCrossing> Scene::crossBounded(
-    std::uint32_t k, const Ray& ray, float tMax,
+std::optional<SurfaceCrossing> Scene::crossLoneTriangle(
+    std::uint32_t pack, const Ray& ray, float tMax,
     std::optional<TriangleIntersector>& intersector) const {
-    const std::uint32_t pack = loneTrianglePack_[k];
-    if (pack == kNotALoneTriangle) return boundedShapes_[k]->cross(ray, tMax);
-    // What Triangle::cross does, but for the set-up.
     if (!intersector) intersector.emplace(ray);
     if (!intersector->canHit()) return std::nullopt;
     const PackHits hits = intersector->intersect(loneTriangles_[pack], 1, tMax);
@@ -148,14 +169,22 @@ bool Scene::occluded(const Ray& ray, float tMax) const {
     if (hasCutOuts_) return intersect(ray, tMax).has_value();  // a blocker may be cut away
     for (const auto& shape : unboundedShapes_)
         if (shape->occluded(ray, tMax)) return true;
-    std::optional<TriangleIntersector> intersector;
-    const auto occludedLeaf = [&](std::uint32_t first, std::uint32_t count, float tFar) {
-        for (std::uint32_t k = first; k < first + count; ++k) {
-            const bool blocks = loneTrianglePack_[k] == kNotALoneTriangle
-                                    ? boundedShapes_[k]->occluded(ray, tFar)
-                                    : crossBounded(k, ray, tFar, intersector).has_value();
-            if (blocks) return true;
+    return loneTriangles_.empty() ? occludedWith<false>(ray, tMax) : occludedWith<true>(ray, tMax);
+}
+
+template <bool kLoneTriangles>
+bool Scene::occludedWith(const Ray& ray, float tMax) const {
+    LoneTriangleSetUp<kLoneTriangles> intersector;
+    const auto blocks = [&](std::uint32_t k, float tFar) {
+        if constexpr (kLoneTriangles) {
+            if (loneTrianglePack_[k] != kNotALoneTriangle)
+                return crossLoneTriangle(loneTrianglePack_[k], ray, tFar, intersector).has_value();
         }
+        return boundedShapes_[k]->occluded(ray, tFar);
+    };
+    const auto occludedLeaf = [&](std::uint32_t first, std::uint32_t count, float tFar) {
+        for (std::uint32_t k = first; k < first + count; ++k)
+            if (blocks(k, tFar)) return true;
         return false;
     };
     return bvh_->occluded(ray, tMax, occludedLeaf, [](std::uint32_t) {});

@@ -10,6 +10,7 @@
 #include "geometry/TrianglePack.h"
 #include "math/Bounds3.h"
 #include "math/Color.h"
+#include "math/Float.h"
 #include "math/Ray.h"
 #include "scene/Camera.h"
 #include "scene/RenderSettings.h"
@@ -105,10 +106,17 @@ public:
     bool hasGlossyMaterial() const { return hasGlossyMaterial_; }
 
 private:
-    // Bounded shape k's crossing. A lone triangle is tested here, with the ray's set-up for
-    // triangles made in `intersector` at the first one the ray meets.
-    std::optional<SurfaceCrossing> crossBounded(
-        std::uint32_t k, const Ray& ray, float tMax,
+    // cross and occluded through the BVH, the lone triangles tested by the scene (kLoneTriangles)
+    // or, as every other shape, by themselves: a scene of none keeps the leaner traversal.
+    template <bool kLoneTriangles>
+    std::optional<SceneCrossing> crossWith(const Ray& ray, float tMax) const;
+    template <bool kLoneTriangles>
+    bool occludedWith(const Ray& ray, float tMax) const;
+    // The crossing of the lone triangle in loneTriangles_[pack]: what Triangle::cross finds, with
+    // the ray's set-up for triangles made in `intersector` at the first one the ray meets. Out of
+    // line, so that the other shapes' path through the traversal stays as lean.
+    LANCER_NEVER_INLINE std::optional<SurfaceCrossing> crossLoneTriangle(
+        std::uint32_t pack, const Ray& ray, float tMax,
         std::optional<TriangleIntersector>& intersector) const;
 
     RenderSettings settings_;
@@ -121,7 +129,7 @@ private:
     std::vector<std::unique_ptr<Shape>> unboundedShapes_;
     std::unique_ptr<WideBvh> bvh_;  // over the bounded shapes
     // For each bounded shape, the pack holding it (in lane 0) when it is a lone triangle
-    // (Shape::loneTriangle), else kNotALoneTriangle.
+    // (Shape::loneTriangle) and the scene has two or more, else kNotALoneTriangle.
     static constexpr std::uint32_t kNotALoneTriangle = ~0u;
     std::vector<std::uint32_t> loneTrianglePack_;
     std::vector<TrianglePack> loneTriangles_;

@@ -103,8 +103,10 @@ void expectSceneMatchesBruteForce(int count, bool withPlane, std::uint32_t seed)
     EXPECT_GT(hits, kRayCount / 8);
 }
 
-// Up to eight bounded shapes make a hierarchy of one node.
+// Up to eight bounded shapes make a hierarchy of one node. Of two, one is a lone triangle, which
+// the scene leaves to test itself; from three on, two are.
 TEST(SceneTraversal, AFewShapesMatchBruteForce) {
+    expectSceneMatchesBruteForce(2, false, 7);
     expectSceneMatchesBruteForce(3, false, 1);
     expectSceneMatchesBruteForce(8, false, 2);
 }
