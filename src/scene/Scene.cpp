@@ -113,21 +113,28 @@ std::optional<SceneCrossing> Scene::cross(const Ray& ray, float tMax) const {
     return loneTriangles_.empty() ? crossWith<false>(ray, tMax) : crossWith<true>(ray, tMax);
 }
 
-// The ray's set-up for the lone triangles, made at the first one the ray meets; nothing when the
-// scene tests none itself.
+// The ray's set-up for the lone triangles, made once before the search (a scene of two or more
+// lone triangles has rays meet them all over); nothing when the scene tests none itself.
 template <bool kLoneTriangles>
-using LoneTriangleSetUp =
-    std::conditional_t<kLoneTriangles, std::optional<TriangleIntersector>, std::monostate>;
+using LoneTriangleSetUp = std::conditional_t<kLoneTriangles, TriangleIntersector, std::monostate>;
+
+template <bool kLoneTriangles>
+LoneTriangleSetUp<kLoneTriangles> loneTriangleSetUp(const Ray& ray) {
+    if constexpr (kLoneTriangles)
+        return TriangleIntersector(ray);
+    else
+        return {};
+}
 
 template <bool kLoneTriangles>
 std::optional<SceneCrossing> Scene::crossWith(const Ray& ray, float tMax) const {
     // The candidates only cross; the caller records the nearest.
     std::optional<SceneCrossing> nearest;
-    LoneTriangleSetUp<kLoneTriangles> intersector;
+    const LoneTriangleSetUp<kLoneTriangles> intersector = loneTriangleSetUp<kLoneTriangles>(ray);
     const auto crossShape = [&](std::uint32_t k, float tFar) {
         if constexpr (kLoneTriangles) {
             if (loneTrianglePack_[k] != kNotALoneTriangle)
-                return crossLoneTriangle(loneTrianglePack_[k], ray, tFar, intersector);
+                return crossLoneTriangle(loneTrianglePack_[k], tFar, intersector);
         }
         return boundedShapes_[k]->cross(ray, tFar);
     };
@@ -152,11 +159,9 @@ std::optional<SceneCrossing> Scene::crossWith(const Ray& ray, float tMax) const 
 }
 
 std::optional<SurfaceCrossing> Scene::crossLoneTriangle(
-    std::uint32_t pack, const Ray& ray, float tMax,
-    std::optional<TriangleIntersector>& intersector) const {
-    if (!intersector) intersector.emplace(ray);
-    if (!intersector->canHit()) return std::nullopt;
-    const PackHits hits = intersector->intersect(loneTriangles_[pack], 1, tMax);
+    std::uint32_t pack, float tMax, const TriangleIntersector& intersector) const {
+    if (!intersector.canHit()) return std::nullopt;
+    const PackHits hits = intersector.intersect(loneTriangles_[pack], 1, tMax);
     if (hits.lanes == 0) return std::nullopt;
     return SurfaceCrossing{hits.t[0], hits.t[0], 0, hits.b0[0], hits.b1[0], hits.b2[0]};
 }
@@ -174,11 +179,11 @@ bool Scene::occluded(const Ray& ray, float tMax) const {
 
 template <bool kLoneTriangles>
 bool Scene::occludedWith(const Ray& ray, float tMax) const {
-    LoneTriangleSetUp<kLoneTriangles> intersector;
+    const LoneTriangleSetUp<kLoneTriangles> intersector = loneTriangleSetUp<kLoneTriangles>(ray);
     const auto blocks = [&](std::uint32_t k, float tFar) {
         if constexpr (kLoneTriangles) {
             if (loneTrianglePack_[k] != kNotALoneTriangle)
-                return crossLoneTriangle(loneTrianglePack_[k], ray, tFar, intersector).has_value();
+                return crossLoneTriangle(loneTrianglePack_[k], tFar, intersector).has_value();
         }
         return boundedShapes_[k]->occluded(ray, tFar);
     };

@@ -113,11 +113,10 @@ private:
     template <bool kLoneTriangles>
     bool occludedWith(const Ray& ray, float tMax) const;
     // The crossing of the lone triangle in loneTriangles_[pack]: what Triangle::cross finds, with
-    // the ray's set-up for triangles made in `intersector` at the first one the ray meets. Out of
-    // line, so that the other shapes' path through the traversal stays as lean.
+    // the ray's set-up made once for all. Out of line, so that the other shapes' path through the
+    // traversal stays as lean.
     LANCER_NEVER_INLINE std::optional<SurfaceCrossing> crossLoneTriangle(
-        std::uint32_t pack, const Ray& ray, float tMax,
-        std::optional<TriangleIntersector>& intersector) const;
+        std::uint32_t pack, float tMax, const TriangleIntersector& intersector) const;
 
     RenderSettings settings_;
     std::unique_ptr<const Camera> camera_;
