@@ -71,7 +71,7 @@ std::optional<SurfaceCrossing> Triangle::cross(const Ray& ray, float tMax) const
     const std::vector<Vec3>& p = mesh_->positions;
     const auto at = intersect(p[v[0]], p[v[1]], p[v[2]], ray, tMax);
     if (!at) return std::nullopt;
-    return SurfaceCrossing{at->t, at->t, 0, at->b0, at->b1, at->b2};
+    return crossingOf(*at);
 }
 
 Hit Triangle::record(const Ray&, const SurfaceCrossing& crossing) const {

@@ -35,6 +35,11 @@ public:
 
     std::array<Vec3, 3> vertices() const;
 
+    // The crossing cross() gives for an intersection found by the watertight test (the scene's
+    // own test of lone triangles gives the same).
+    static SurfaceCrossing crossingOf(const TriangleIntersection& at) {
+        return SurfaceCrossing{at.t, at.t, 0, at.b0, at.b1, at.b2};
+    }
     // Watertight ray/triangle intersection with 0 < t < tMax (see TriangleIntersector).
     static std::optional<TriangleIntersection> intersect(const Vec3& p0, const Vec3& p1,
                                                          const Vec3& p2, const Ray& ray,

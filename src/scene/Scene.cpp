@@ -1,12 +1,12 @@
 #include "scene/Scene.h"
 
-#include <algorithm>
 #include <type_traits>
 #include <variant>
 
 #include "accel/Bvh.h"
 #include "accel/WideBvh.h"
 #include "geometry/Shape.h"
+#include "geometry/Triangle.h"
 #include "geometry/TriangleIntersector.h"
 #include "lights/EnvironmentLight.h"
 #include "lights/Light.h"
@@ -65,15 +65,17 @@ void Scene::buildAccelerationStructure() {
 
     loneTrianglePack_.assign(boundedShapes_.size(), kNotALoneTriangle);
     loneTriangles_.clear();
-    // With a single lone triangle there is no set-up to share: it tests itself.
-    const auto isLoneTriangle = [](const auto& shape) { return shape->loneTriangle().has_value(); };
-    if (std::count_if(boundedShapes_.begin(), boundedShapes_.end(), isLoneTriangle) < 2) return;
     for (std::size_t k = 0; k < boundedShapes_.size(); ++k) {
         if (const std::optional<std::array<Vec3, 3>> corners = boundedShapes_[k]->loneTriangle()) {
             loneTrianglePack_[k] = static_cast<std::uint32_t>(loneTriangles_.size());
             TrianglePack& pack = loneTriangles_.emplace_back();  // zeros in the other lanes
             pack.set(0, (*corners)[0], (*corners)[1], (*corners)[2]);
         }
+    }
+    // With a single lone triangle there is no set-up to share: it tests itself.
+    if (loneTriangles_.size() < 2) {
+        loneTrianglePack_.assign(boundedShapes_.size(), kNotALoneTriangle);
+        loneTriangles_.clear();
     }
 }
 
@@ -163,7 +165,7 @@ std::optional<SurfaceCrossing> Scene::crossLoneTriangle(
     if (!intersector.canHit()) return std::nullopt;
     const PackHits hits = intersector.intersect(loneTriangles_[pack], 1, tMax);
     if (hits.lanes == 0) return std::nullopt;
-    return SurfaceCrossing{hits.t[0], hits.t[0], 0, hits.b0[0], hits.b1[0], hits.b2[0]};
+    return Triangle::crossingOf(hits.at(0));
 }
 
 Hit Scene::record(const Ray& ray, const SceneCrossing& crossing) const {
