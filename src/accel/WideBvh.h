@@ -254,7 +254,7 @@ void WideBvh::traverseWith(const Ray& ray, const float& tMax, VisitLeaf&& visitL
     int stackSize = 0;
     StackEntry current{0, 0, 0};  // the root
     // Takes the next entry still within reach into current; false when none is left.
-    const auto pop = [&] {
+    const auto pop = [&]() LANCER_INLINE_LAMBDA {
         while (stackSize > 0) {
             current = stack[--stackSize];
             // A closer hit found since the entry was pushed may have put it out of reach.
@@ -274,7 +274,7 @@ void WideBvh::traverseWith(const Ray& ray, const float& tMax, VisitLeaf&& visitL
             if (!pop()) return;
             continue;
         }
-        const auto entry = [&](int slot) {
+        const auto entry = [&](int slot) LANCER_INLINE_LAMBDA {
             if (node.primitiveCount[slot] == 0) {
                 const auto* child = reinterpret_cast<const char*>(nodes + node.child[slot]);
                 for (std::size_t line = 0; line < sizeof(WideBvhNode); line += 64)
