@@ -10,8 +10,10 @@ namespace lancer {
 WideBvh::WideBvh(const Bvh& bvh, const LeafLayout& layOutLeaf) : bounds_(bvh.bounds()) {
     const std::span<const BvhNode> binary = bvh.nodes();
     if (binary.empty()) return;
+    std::vector<SlotPlan> plans(binary.size());
+    planSlots(binary, 0, plans);
     nodes_.emplace_back();
-    collapse(binary, 0, 0, layOutLeaf);
+    collapse(binary, 0, 0, plans, layOutLeaf);
     nodes_.shrink_to_fit();
 }
 
@@ -54,36 +56,90 @@ WideBvh::WideBvh(const Bounds3& bounds, std::vector<WideBvhNode> nodes, const Le
     }
 }
 
-// Fills wide node `index` with the binary subtree under `root`, cut into at most kWidth children
-// by opening the interior node of largest surface area (the most likely to be entered) until
-// kWidth are reached or only leaves are left; then does the same for each interior child.
-void WideBvh::collapse(std::span<const BvhNode> binary, std::uint32_t root, std::uint32_t index,
-                       const LeafLayout& layOutLeaf) {
-    constexpr int kWidth = WideBvhNode::kWidth;
-    std::array<std::uint32_t, kWidth> slots{root};
-    int slotCount = 1;
-    const auto widestInterior = [&] {
-        int widest = -1;
-        float widestArea = -1;
-        for (int i = 0; i < slotCount; ++i) {
-            const BvhNode& node = binary[slots[i]];
-            if (node.isLeaf()) continue;
-            const float area = node.box().surfaceArea();
-            if (area > widestArea) {
-                widest = i;
-                widestArea = area;
+// How the collapse holds one binary subtree in at most j slots of wide nodes (j = 1 to kWidth).
+struct WideBvh::SlotPlan {
+    // leftSlots[j - 1]: how many of j slots go to the left child's subtree (the rest to the
+    // right's), or 0 to hold the subtree in one slot: a leaf, or a wide node of its own.
+    std::array<std::uint8_t, WideBvhNode::kWidth> leftSlots;
+    // How many of a wide node's slots made of this subtree go to the left child's subtree.
+    std::uint8_t nodeLeftSlots;
+};
+
+namespace {
+
+constexpr int kWidth = WideBvhNode::kWidth;
+using SlotAreas = std::array<float, kWidth>;
+
+}  // namespace
+
+// The collapse minimises the surface area heuristic's cost of the wide nodes: the sum of their
+// areas, each node's being in proportion to the chance that a ray visits it (the leaves are the
+// binary tree's, whatever the plan, and cost the same). Opening the widest binary node first,
+// greedily, left most nodes with two or three children (a subtree too small to share a full node
+// gets a node of its own); the optimal plan is found by dynamic programming over slot counts, as
+// Ylitie, Karras and Laine collapse a binary tree (2017, "Efficient incoherent ray traversal on
+// GPUs through compressed wide BVHs"). Returns the least area for each slot count, having planned
+// the subtree under `node` (children first; the recursion is at most Bvh::kMaxDepth deep).
+SlotAreas WideBvh::planSlots(std::span<const BvhNode> binary, std::uint32_t node,
+                             std::span<SlotPlan> plans) {
+    SlotPlan& plan = plans[node];
+    plan = {};
+    if (binary[node].isLeaf()) return SlotAreas{};
+    const SlotAreas left = planSlots(binary, node + 1, plans);
+    const SlotAreas right = planSlots(binary, binary[node].offset, plans);
+    // shared[j - 1]: the least area with j slots shared between the two children's subtrees.
+    SlotAreas shared;
+    std::array<std::uint8_t, kWidth> sharedLeft{};
+    shared[0] = kInfinity;
+    for (int j = 2; j <= kWidth; ++j) {
+        // Areas beyond the float range (boxes of 1e20 and more) are all infinite: then any
+        // share will do, but it must be a share.
+        shared[j - 1] = kInfinity;
+        sharedLeft[j - 1] = 1;
+        for (int k = 1; k < j; ++k) {
+            if (const float area = left[k - 1] + right[j - k - 1]; area < shared[j - 1]) {
+                shared[j - 1] = area;
+                sharedLeft[j - 1] = static_cast<std::uint8_t>(k);
             }
         }
-        return widest;
-    };
-    for (int opened; slotCount < kWidth && (opened = widestInterior()) >= 0;) {
-        // Its two children take its place, in order, so that leaves keep the binary tree's order.
-        const std::uint32_t node = slots[opened];
-        std::copy_backward(slots.begin() + opened + 1, slots.begin() + slotCount,
-                           slots.begin() + slotCount + 1);
-        slots[opened] = node + 1;
-        slots[opened + 1] = binary[node].offset;
-        ++slotCount;
+    }
+    // In one slot the subtree is a wide node of its own, its kWidth slots shared between the
+    // children; with more slots it may open into its children's, which saves that node.
+    const float asNode = binary[node].box().surfaceArea() + shared[kWidth - 1];
+    SlotAreas areas;
+    for (int j = 1; j <= kWidth; ++j) {
+        const bool opens = shared[j - 1] <= asNode;
+        areas[j - 1] = opens ? shared[j - 1] : asNode;
+        plan.leftSlots[j - 1] = opens ? sharedLeft[j - 1] : 0;
+    }
+    plan.nodeLeftSlots = sharedLeft[kWidth - 1];
+    return areas;
+}
+
+// Appends the slots that hold the subtree under `node` in at most `slotCount`, as planned.
+void WideBvh::appendSlots(std::span<const BvhNode> binary, std::uint32_t node, int slotCount,
+                          std::span<const SlotPlan> plans, std::span<std::uint32_t> slots,
+                          int& used) {
+    const int left = plans[node].leftSlots[slotCount - 1];
+    if (left == 0) {
+        slots[used++] = node;
+        return;
+    }
+    appendSlots(binary, node + 1, left, plans, slots, used);
+    appendSlots(binary, binary[node].offset, slotCount - left, plans, slots, used);
+}
+
+// Fills wide node `index` with the binary subtree under `root`, in the slots the plan gives it
+// (leaves in the binary tree's order); then does the same for each interior child.
+void WideBvh::collapse(std::span<const BvhNode> binary, std::uint32_t root, std::uint32_t index,
+                       std::span<const SlotPlan> plans, const LeafLayout& layOutLeaf) {
+    std::array<std::uint32_t, kWidth> slots{root};
+    int slotCount = 1;
+    if (!binary[root].isLeaf()) {
+        const int left = plans[root].nodeLeftSlots;
+        slotCount = 0;
+        appendSlots(binary, root + 1, left, plans, slots, slotCount);
+        appendSlots(binary, binary[root].offset, kWidth - left, plans, slots, slotCount);
     }
 
     WideBvhNode node{};
@@ -111,7 +167,7 @@ void WideBvh::collapse(std::span<const BvhNode> binary, std::uint32_t root, std:
     nodes_[index] = node;
     nodes_.resize(next);
     for (int i = 0; i < interiorCount; ++i)
-        collapse(binary, interiorChildren[i], firstChild + static_cast<std::uint32_t>(i),
+        collapse(binary, interiorChildren[i], firstChild + static_cast<std::uint32_t>(i), plans,
                  layOutLeaf);
 }
 

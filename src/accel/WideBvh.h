@@ -1,5 +1,6 @@
 #pragma once
 
+#include <array>
 #include <bit>
 #include <cstddef>
 #include <cstdint>
@@ -36,8 +37,8 @@ struct alignas(64) WideBvhNode {
 static_assert(sizeof(WideBvhNode) == 256);
 
 // An 8-wide BVH collapsed from a binary one: each node takes up to eight of the binary tree's
-// nodes, opening the largest first, and the ray meets all eight boxes in two 4-wide SIMD slab
-// tests. What limits the traversal of deep trees (meshes) on incoherent rays is the chain of
+// subtrees, chosen so that the wide nodes' total area (the surface area heuristic's node cost)
+// is the least possible, and the ray meets all eight boxes in two 4-wide SIMD slab tests. What limits the traversal of deep trees (meshes) on incoherent rays is the chain of
 // dependent node loads and mispredicted branches, and a ray here visits a sixth as many nodes as
 // in the binary tree (9.5 instead of 59 per diffuse-bounce ray on a 1M-triangle mesh). Eight
 // children per node measured faster than four, even on 4-wide SSE; see docs/BENCHMARKS.md.
@@ -137,8 +138,17 @@ private:
     // than the binary one.
     static constexpr int kStackSize = (WideBvhNode::kWidth - 1) * Bvh::kMaxDepth + 1;
 
+    // The collapse: planSlots finds, bottom-up, the least wide-node area of each binary subtree
+    // for one to kWidth slots; collapse then fills the wide nodes top-down as planned.
+    struct SlotPlan;
+    static std::array<float, WideBvhNode::kWidth> planSlots(std::span<const BvhNode> binary,
+                                                            std::uint32_t node,
+                                                            std::span<SlotPlan> plans);
+    static void appendSlots(std::span<const BvhNode> binary, std::uint32_t node, int slotCount,
+                            std::span<const SlotPlan> plans, std::span<std::uint32_t> slots,
+                            int& used);
     void collapse(std::span<const BvhNode> binary, std::uint32_t root, std::uint32_t index,
-                  const LeafLayout& layOutLeaf);
+                  std::span<const SlotPlan> plans, const LeafLayout& layOutLeaf);
 
     // Walks the children the ray meets before tMax (which visitLeaf may lower), nearest first if
     // kNearestFirst, calling visitLeaf(leaf, count) on each leaf; stops when visitLeaf returns
