@@ -18,7 +18,7 @@ Bounds3 Sphere::bounds() const {
     return {center_ - Vec3(radius_), center_ + Vec3(radius_)};
 }
 
-std::optional<std::pair<double, double>> Sphere::lineRoots(const Ray& ray) const {
+std::optional<std::pair<double, double>> Sphere::lineRoots(const Ray& ray, Roots wanted) const {
     // Solved in double precision: the roots, and so the side of the surface a spawned ray starts
     // on, are then exact to far below the float error bound used to offset spawned rays.
     const Vec3d o = Vec3d(ray.origin) - Vec3d(center_);
@@ -31,6 +31,11 @@ std::optional<std::pair<double, double>> Sphere::lineRoots(const Ray& ray) const
     const double inverseA = 1 / a;
     const double halfB = dot(o, d);
     const double c = dot(o, o) - r * r;
+    // From outside (c > 0), moving away (halfB > 0): the roots below are then both negative, by
+    // their signs alone (q < 0, so q / a < 0 and c / q < 0). A ray leaving a sphere it was
+    // spawned on meets it so, as does one pointing away from it: the division and the square
+    // root on the chain below are then not waited for.
+    if (wanted == Roots::ahead && c > 0 && halfB > 0) return std::nullopt;
     // b^2 - 4ac rewritten with the closest point of the line to the centre (Ray Tracing Gems,
     // ch. 7), which keeps its precision for small spheres far from the ray origin.
     const Vec3d toLine = o - (halfB * inverseA) * d;
@@ -43,7 +48,7 @@ std::optional<std::pair<double, double>> Sphere::lineRoots(const Ray& ray) const
 }
 
 std::optional<SurfaceCrossing> Sphere::cross(const Ray& ray, float tMax) const {
-    const std::optional<std::pair<double, double>> roots = lineRoots(ray);
+    const std::optional<std::pair<double, double>> roots = lineRoots(ray, Roots::ahead);
     if (!roots) return std::nullopt;
     const auto [t0, t1] = *roots;
     if (t0 >= tMax || t1 <= 0) return std::nullopt;
@@ -53,7 +58,7 @@ std::optional<SurfaceCrossing> Sphere::cross(const Ray& ray, float tMax) const {
 }
 
 void Sphere::crossLine(const Ray& ray, LineCrossings& crossings) const {
-    const std::optional<std::pair<double, double>> roots = lineRoots(ray);
+    const std::optional<std::pair<double, double>> roots = lineRoots(ray, Roots::all);
     if (!roots) return;
     crossings.push_back({SurfaceCrossing{roots->first, roots->first}, true});
     crossings.push_back({SurfaceCrossing{roots->second, roots->second}, false});

@@ -41,8 +41,11 @@ public:
     float radius() const { return radius_; }
 
 private:
-    // Where the ray's line meets the sphere, in increasing order (equal where it touches).
-    std::optional<std::pair<double, double>> lineRoots(const Ray& ray) const;
+    // Which roots of the ray's line a caller needs.
+    enum class Roots { all, ahead };
+    // Where the ray's line meets the sphere, in increasing order (equal where it touches). With
+    // Roots::ahead, nothing either when both are known to lie behind the origin before solving.
+    std::optional<std::pair<double, double>> lineRoots(const Ray& ray, Roots wanted) const;
     // Whether p is inside the sphere or within rounding error of its surface (hit points on the
     // sphere itself, from inside or out): from there the whole sphere is seen, which area
     // sampling covers, while the cone would shrink to the point itself.

@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 
 #include "IntersectInto.h"
 #include "TestSupport.h"
+#include "geometry/LineCrossing.h"
 #include "geometry/Sphere.h"
 #include "math/Float.h"
 
@@ -58,6 +60,34 @@ TEST(SphereTest, DoesNotReportAHitBehindTheOrigin) {
     Hit hit = untouchedHit();
     EXPECT_FALSE(test::intersectInto(sphere, {Vec3(0, 0, 0), Vec3(0, 0, 1)}, kInfinity, hit));
     EXPECT_TRUE(isUntouched(hit));
+}
+
+// cross skips solving for rays from outside that point away (both roots behind the origin);
+// crossLine always solves. On rays from everywhere around the sphere, its surface included, cross
+// must give crossLine's first root ahead of the origin, to the bit.
+TEST(SphereTest, CrossGivesTheFirstRootAheadOfEveryLine) {
+    const Sphere sphere(Vec3(0.3f, -1.2f, 2.5f), 1.7f, nullptr);
+    Random random(2026);
+    int ahead = 0, behind = 0;
+    for (int i = 0; i < 20000; ++i) {
+        // Origins inside, on (to float rounding) and outside the surface.
+        const float distance = 1.7f * static_cast<float>(i % 4 == 0 ? 1 : random.uniform(0, 3));
+        const Ray ray{Vec3(0.3f, -1.2f, 2.5f) + distance * random.unitVector(),
+                      static_cast<float>(random.uniform(0.1, 4)) * random.unitVector()};
+        LineCrossings line;
+        sphere.crossLine(ray, line);
+        std::optional<double> firstAhead;
+        for (const LineCrossing& root : line)
+            if (!firstAhead && root.crossing.t > 0) firstAhead = root.crossing.t;
+        const std::optional<SurfaceCrossing> crossing = sphere.cross(ray, kInfinity);
+        ASSERT_EQ(crossing.has_value(), firstAhead.has_value()) << "ray " << i;
+        if (crossing) {
+            EXPECT_EQ(crossing->t, *firstAhead) << "ray " << i;
+        }
+        ++(crossing ? ahead : behind);
+    }
+    EXPECT_GT(ahead, 5000);
+    EXPECT_GT(behind, 5000);
 }
 
 TEST(SphereTest, FromInsideHitsTheFarSide) {
