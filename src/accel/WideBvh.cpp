@@ -7,6 +7,22 @@
 
 namespace lancer {
 
+// How the collapse holds one binary subtree in at most j slots of wide nodes (j = 1 to kWidth).
+struct WideBvh::SlotPlan {
+    // leftSlots[j - 1]: how many of j slots go to the left child's subtree (the rest to the
+    // right's), or 0 to hold the subtree in one slot: a leaf, or a wide node of its own.
+    std::array<std::uint8_t, WideBvhNode::kWidth> leftSlots;
+    // How many of a wide node's slots made of this subtree go to the left child's subtree.
+    std::uint8_t nodeLeftSlots;
+};
+
+namespace {
+
+constexpr int kWidth = WideBvhNode::kWidth;
+using SlotAreas = std::array<float, kWidth>;
+
+}  // namespace
+
 WideBvh::WideBvh(const Bvh& bvh, const LeafLayout& layOutLeaf) : bounds_(bvh.bounds()) {
     const std::span<const BvhNode> binary = bvh.nodes();
     if (binary.empty()) return;
@@ -55,22 +71,6 @@ WideBvh::WideBvh(const Bounds3& bounds, std::vector<WideBvhNode> nodes, const Le
         }
     }
 }
-
-// How the collapse holds one binary subtree in at most j slots of wide nodes (j = 1 to kWidth).
-struct WideBvh::SlotPlan {
-    // leftSlots[j - 1]: how many of j slots go to the left child's subtree (the rest to the
-    // right's), or 0 to hold the subtree in one slot: a leaf, or a wide node of its own.
-    std::array<std::uint8_t, WideBvhNode::kWidth> leftSlots;
-    // How many of a wide node's slots made of this subtree go to the left child's subtree.
-    std::uint8_t nodeLeftSlots;
-};
-
-namespace {
-
-constexpr int kWidth = WideBvhNode::kWidth;
-using SlotAreas = std::array<float, kWidth>;
-
-}  // namespace
 
 // The collapse minimises the surface area heuristic's cost of the wide nodes: the sum of their
 // areas, each node's being in proportion to the chance that a ray visits it (the leaves are the
