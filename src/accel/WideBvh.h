@@ -38,10 +38,11 @@ static_assert(sizeof(WideBvhNode) == 256);
 
 // An 8-wide BVH collapsed from a binary one: each node takes up to eight of the binary tree's
 // subtrees, chosen so that the wide nodes' total area (the surface area heuristic's node cost)
-// is the least possible, and the ray meets all eight boxes in two 4-wide SIMD slab tests. What limits the traversal of deep trees (meshes) on incoherent rays is the chain of
-// dependent node loads and mispredicted branches, and a ray here visits a sixth as many nodes as
-// in the binary tree (9.5 instead of 59 per diffuse-bounce ray on a 1M-triangle mesh). Eight
-// children per node measured faster than four, even on 4-wide SSE; see docs/BENCHMARKS.md.
+// is the least possible, and the ray meets all eight boxes in two 4-wide SIMD slab tests. What
+// limits the traversal of deep trees (meshes) on incoherent rays is the chain of dependent node
+// loads and mispredicted branches, and a ray here visits a sixth as many nodes as in the binary
+// tree (9.5 instead of 59 per diffuse-bounce ray on a 1M-triangle mesh). Eight children per node
+// measured faster than four, even on 4-wide SSE; see docs/BENCHMARKS.md.
 //
 // The owner lays out each leaf's primitives as it likes while the tree is collapsed (to pad
 // them, say, to a SIMD width), and the traversal hands its leaves back as the owner made them.
