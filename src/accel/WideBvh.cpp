@@ -11,9 +11,9 @@ namespace lancer {
 struct WideBvh::SlotPlan {
     // leftSlots[j - 1]: how many of j slots go to the left child's subtree (the rest to the
     // right's), or 0 to hold the subtree in one slot: a leaf, or a wide node of its own.
+    // An interior subtree given all kWidth slots always opens (that saves its own node), so
+    // leftSlots[kWidth - 1] is also how a wide node made of it shares its slots.
     std::array<std::uint8_t, WideBvhNode::kWidth> leftSlots;
-    // How many of a wide node's slots made of this subtree go to the left child's subtree.
-    std::uint8_t nodeLeftSlots;
 };
 
 namespace {
@@ -108,11 +108,11 @@ SlotAreas WideBvh::planSlots(std::span<const BvhNode> binary, std::uint32_t node
     const float asNode = binary[node].box().surfaceArea() + shared[kWidth - 1];
     SlotAreas areas;
     for (int j = 1; j <= kWidth; ++j) {
-        const bool opens = shared[j - 1] <= asNode;
+        // (Opens too where an area is NaN, so that all kWidth slots always open.)
+        const bool opens = !(asNode < shared[j - 1]);
         areas[j - 1] = opens ? shared[j - 1] : asNode;
         plan.leftSlots[j - 1] = opens ? sharedLeft[j - 1] : 0;
     }
-    plan.nodeLeftSlots = sharedLeft[kWidth - 1];
     return areas;
 }
 
@@ -133,14 +133,9 @@ void WideBvh::appendSlots(std::span<const BvhNode> binary, std::uint32_t node, i
 // (leaves in the binary tree's order); then does the same for each interior child.
 void WideBvh::collapse(std::span<const BvhNode> binary, std::uint32_t root, std::uint32_t index,
                        std::span<const SlotPlan> plans, const LeafLayout& layOutLeaf) {
-    std::array<std::uint32_t, kWidth> slots{root};
-    int slotCount = 1;
-    if (!binary[root].isLeaf()) {
-        const int left = plans[root].nodeLeftSlots;
-        slotCount = 0;
-        appendSlots(binary, root + 1, left, plans, slots, slotCount);
-        appendSlots(binary, binary[root].offset, kWidth - left, plans, slots, slotCount);
-    }
+    std::array<std::uint32_t, kWidth> slots{};
+    int slotCount = 0;
+    appendSlots(binary, root, kWidth, plans, slots, slotCount);  // a lone leaf takes one slot
 
     WideBvhNode node{};
     std::array<std::uint32_t, kWidth> interiorChildren{};  // binary roots of the wide children

@@ -34,6 +34,16 @@ bool isUnused(const WideBvhNode& node, int slot) {
     return node.primitiveCount[slot] == 0 && node.child[slot] == 0;
 }
 
+// The leaves of the wide tree, as the layout above made them, in increasing order.
+std::vector<std::uint32_t> sortedLeaves(const WideBvh& wide) {
+    std::vector<std::uint32_t> leaves;
+    for (const WideBvhNode& node : wide.nodes())
+        for (int slot = 0; slot < WideBvhNode::kWidth; ++slot)
+            if (node.primitiveCount[slot] != 0) leaves.push_back(node.child[slot]);
+    std::sort(leaves.begin(), leaves.end());
+    return leaves;
+}
+
 // The sum of the wide nodes' areas, each node's box being the union of its children's.
 double wideNodeArea(const WideBvh& wide) {
     double area = 0;
@@ -88,7 +98,6 @@ TEST(WideBvhCollapse, KeepsEveryLeafOnceWithinEightSlots) {
         std::vector<std::uint32_t> leaves;
         for (const BvhNode& node : binary.nodes())
             if (node.isLeaf()) leaves.push_back(node.offset);
-        std::vector<std::uint32_t> wideLeaves;
         std::vector<int> parents(wide.nodes().size(), 0);
         for (std::size_t n = 0; n < wide.nodes().size(); ++n) {
             const WideBvhNode& node = wide.nodes()[n];
@@ -99,9 +108,7 @@ TEST(WideBvhCollapse, KeepsEveryLeafOnceWithinEightSlots) {
                     continue;
                 }
                 ++used;
-                if (node.primitiveCount[slot] != 0) {
-                    wideLeaves.push_back(node.child[slot]);
-                } else {
+                if (node.primitiveCount[slot] == 0) {
                     ASSERT_GT(node.child[slot], n);
                     ASSERT_LT(node.child[slot], wide.nodes().size());
                     ++parents[node.child[slot]];
@@ -112,8 +119,7 @@ TEST(WideBvhCollapse, KeepsEveryLeafOnceWithinEightSlots) {
         for (std::size_t n = 1; n < parents.size(); ++n)
             EXPECT_EQ(parents[n], 1) << count << " primitives, node " << n;
         std::sort(leaves.begin(), leaves.end());
-        std::sort(wideLeaves.begin(), wideLeaves.end());
-        EXPECT_EQ(wideLeaves, leaves) << count << " primitives";
+        EXPECT_EQ(sortedLeaves(wide), leaves) << count << " primitives";
     }
 }
 
@@ -124,15 +130,10 @@ TEST(WideBvhCollapse, BoxesWhoseAreaIsBeyondFloatsStillMakeATree) {
         boxes.emplace_back(Vec3(1e25f * static_cast<float>(i), 0, 0),
                            Vec3(1e25f * static_cast<float>(i + 2), 1e25f, 1e25f));
     const WideBvh wide = collapsed(Bvh(boxes, 1));
-    std::vector<std::uint32_t> leaves;
-    for (const WideBvhNode& node : wide.nodes())
-        for (int slot = 0; slot < WideBvhNode::kWidth; ++slot)
-            if (node.primitiveCount[slot] != 0) leaves.push_back(node.child[slot]);
-    std::sort(leaves.begin(), leaves.end());
     std::vector<std::uint32_t> expected(1000);
     for (std::uint32_t i = 0; i < 1000; ++i)
         expected[i] = i;
-    EXPECT_EQ(leaves, expected);
+    EXPECT_EQ(sortedLeaves(wide), expected);
 }
 
 TEST(WideBvhCollapse, AFewLeavesShareTheRoot) {
