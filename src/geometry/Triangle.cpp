@@ -22,7 +22,11 @@ std::shared_ptr<const TriangleMesh> makeSingleTriangleMesh(
 
 Triangle::Triangle(std::shared_ptr<const TriangleMesh> mesh, std::uint32_t index,
                    const Material* material)
-    : Shape(material), mesh_(std::move(mesh)), index_(index) {}
+    : Shape(material), mesh_(std::move(mesh)), index_(index) {
+    const UniformSampling sampling = uniformSamplingOf(vertices());
+    frontNormal_ = sampling.frontNormal;
+    inverseArea_ = sampling.inverseArea;
+}
 
 Triangle::Triangle(const std::array<Vec3, 3>& vertices, const Material* material,
                    const std::optional<std::array<Vec3, 3>>& normals,
@@ -37,15 +41,27 @@ float Triangle::area(std::uint32_t) const {
     return areaOf(vertices());
 }
 
-ShapeSample Triangle::sampleUniformly(const std::array<Vec3, 3>& p, const Vec2& u) {
+Triangle::UniformSampling Triangle::uniformSamplingOf(const std::array<Vec3, 3>& p) {
+    const Vec3 normal = lancer::cross(p[1] - p[0], p[2] - p[0]);
+    // normalize(normal) and 1 / areaOf(p) from one division: halving the length is exact, so
+    // 1 / (length / 2) rounds to twice 1 / length.
+    const float inverseLength = 1 / length(normal);
+    return {normal * inverseLength, 2 * inverseLength};
+}
+
+Vec3 Triangle::uniformPoint(const std::array<Vec3, 3>& p, const Vec2& u) {
     const float su0 = std::sqrt(u.x);
     const float b0 = 1 - su0, b1 = u.y * su0;
-    return {b0 * p[0] + b1 * p[1] + (1 - b0 - b1) * p[2],
-            normalize(lancer::cross(p[1] - p[0], p[2] - p[0])), 1 / areaOf(p)};
+    return b0 * p[0] + b1 * p[1] + (1 - b0 - b1) * p[2];
+}
+
+ShapeSample Triangle::sampleUniformly(const std::array<Vec3, 3>& p, const Vec2& u) {
+    const UniformSampling sampling = uniformSamplingOf(p);
+    return {uniformPoint(p, u), sampling.frontNormal, sampling.inverseArea};
 }
 
 std::optional<ShapeSample> Triangle::sample(std::uint32_t, const Vec2& u) const {
-    return sampleUniformly(vertices(), u);
+    return ShapeSample{uniformPoint(vertices(), u), frontNormal_, inverseArea_};
 }
 
 Tessellation Triangle::tessellate(const TessellationRequest&) const {

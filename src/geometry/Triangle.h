@@ -54,8 +54,20 @@ public:
     static ShapeSample sampleUniformly(const std::array<Vec3, 3>& vertices, const Vec2& u);
 
 private:
+    // What every uniform sample of a triangle shares: its front normal and density.
+    struct UniformSampling {
+        Vec3 frontNormal;
+        float inverseArea;
+    };
+    static UniformSampling uniformSamplingOf(const std::array<Vec3, 3>& vertices);
+    // The square-root warp of u onto the triangle.
+    static Vec3 uniformPoint(const std::array<Vec3, 3>& vertices, const Vec2& u);
+
     std::shared_ptr<const TriangleMesh> mesh_;
     std::uint32_t index_;
+    // The triangle's UniformSampling, kept: a light samples its shape many times.
+    Vec3 frontNormal_;
+    float inverseArea_;
 };
 
 }  // namespace lancer

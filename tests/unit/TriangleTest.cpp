@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 
@@ -297,6 +298,35 @@ TEST(TriangleTest, DefaultUvsAreTheUnitRightTriangle) {
         // Default uvs (0,0), (1,0), (0,1): uv = (b1, b2).
         EXPECT_NEAR(hit.uv().x, b.x, kTolerance);
         EXPECT_NEAR(hit.uv().y, b.y, kTolerance);
+    }
+}
+
+// A triangle keeps its front normal and density for its samples (a light samples it often): they
+// must be, to the bit, what its vertices give, the normalized edge product and one over the area,
+// for triangles of every size and orientation.
+TEST(TriangleTest, SamplesCarryTheNormalizedEdgeProductAndOneOverTheArea) {
+    Random random(71);
+    for (int i = 0; i < 2000; ++i) {
+        const float scale = static_cast<float>(std::pow(10.0, random.uniform(-15, 15)));
+        const Vec3 origin = random.unitVector() * static_cast<float>(random.uniform(0, 100));
+        const Vertices v{origin, origin + scale * random.unitVector(),
+                         origin + scale * random.unitVector()};
+        const Triangle triangle(v, nullptr);
+        const Vec2 u(static_cast<float>(random.uniform()), static_cast<float>(random.uniform()));
+        const std::optional<ShapeSample> kept = triangle.sample(0, u);
+        const ShapeSample fromVertices = Triangle::sampleUniformly(v, u);
+        ASSERT_TRUE(kept);
+        const Vec3 normal = normalize(cross(v[1] - v[0], v[2] - v[0]));
+        const float density = 1 / Triangle::areaOf(v);
+        for (const ShapeSample& s : {*kept, fromVertices}) {
+            EXPECT_EQ(s.p, fromVertices.p);
+            for (int axis = 0; axis < 3; ++axis)
+                EXPECT_EQ(std::bit_cast<std::uint32_t>(s.n[axis]),
+                          std::bit_cast<std::uint32_t>(normal[axis]))
+                    << "triangle " << i << ", axis " << axis;
+            EXPECT_EQ(std::bit_cast<std::uint32_t>(s.pdf), std::bit_cast<std::uint32_t>(density))
+                << "triangle " << i << " of scale " << scale;
+        }
     }
 }
 
