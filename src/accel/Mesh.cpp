@@ -152,7 +152,8 @@ std::optional<SurfaceCrossing> Mesh::cross(const Ray& ray, float tMax) const {
 Hit Mesh::record(const Ray&, const SurfaceCrossing& crossing) const {
     Hit hit = Triangle::makeHit(
         triangles_, crossing.primitive,
-        {crossing.b0, crossing.b1, crossing.b2, static_cast<float>(crossing.tShape)});
+        {crossing.b0, crossing.b1, crossing.b2, static_cast<float>(crossing.tShape)},
+        Triangle::surfaceFrameOf(triangles_, crossing.primitive));
     hit.shape = this;
     return hit;
 }

@@ -18,15 +18,21 @@ std::shared_ptr<const TriangleMesh> makeSingleTriangleMesh(
     return mesh;
 }
 
+// A triangle's vertex uvs: the mesh's, or the unit right triangle's where the mesh has none.
+std::array<Vec2, 3> vertexUvs(const TriangleMesh& mesh, const std::uint32_t* v) {
+    if (mesh.uvs.empty()) return {Vec2(0, 0), Vec2(1, 0), Vec2(0, 1)};
+    return {mesh.uvs[v[0]], mesh.uvs[v[1]], mesh.uvs[v[2]]};
+}
+
 }  // namespace
 
 Triangle::Triangle(std::shared_ptr<const TriangleMesh> mesh, std::uint32_t index,
                    const Material* material)
-    : Shape(material), mesh_(std::move(mesh)), index_(index) {
-    const UniformSampling sampling = uniformSamplingOf(vertices());
-    frontNormal_ = sampling.frontNormal;
-    inverseArea_ = sampling.inverseArea;
-}
+    : Shape(material),
+      mesh_(std::move(mesh)),
+      index_(index),
+      frame_(surfaceFrameOf(*mesh_, index_)),
+      inverseArea_(uniformSamplingOf(vertices()).inverseArea) {}
 
 Triangle::Triangle(const std::array<Vec3, 3>& vertices, const Material* material,
                    const std::optional<std::array<Vec3, 3>>& normals,
@@ -61,7 +67,8 @@ ShapeSample Triangle::sampleUniformly(const std::array<Vec3, 3>& p, const Vec2& 
 }
 
 std::optional<ShapeSample> Triangle::sample(std::uint32_t, const Vec2& u) const {
-    return ShapeSample{uniformPoint(vertices(), u), frontNormal_, inverseArea_};
+    // frame_.ng is the normalized edge product, as uniformSamplingOf gives it.
+    return ShapeSample{uniformPoint(vertices(), u), frame_.ng, inverseArea_};
 }
 
 Tessellation Triangle::tessellate(const TessellationRequest&) const {
@@ -92,7 +99,8 @@ std::optional<SurfaceCrossing> Triangle::cross(const Ray& ray, float tMax) const
 
 Hit Triangle::record(const Ray&, const SurfaceCrossing& crossing) const {
     Hit hit = makeHit(*mesh_, index_,
-                      {crossing.b0, crossing.b1, crossing.b2, static_cast<float>(crossing.tShape)});
+                      {crossing.b0, crossing.b1, crossing.b2, static_cast<float>(crossing.tShape)},
+                      frame_);
     hit.shape = this;
     hit.primitive = 0;  // the triangle is this shape's one primitive
     if (material()) hit.material = material();
@@ -107,8 +115,30 @@ std::optional<TriangleIntersection> Triangle::intersect(const Vec3& v0, const Ve
     return intersector.intersect(v0, v1, v2, tMax);
 }
 
-Hit Triangle::makeHit(const TriangleMesh& mesh, std::uint32_t index,
-                      const TriangleIntersection& at) {
+Triangle::SurfaceFrame Triangle::surfaceFrameOf(const TriangleMesh& mesh, std::uint32_t index) {
+    const std::uint32_t* v = &mesh.indices[3 * std::size_t{index}];
+    const Vec3& p0 = mesh.positions[v[0]];
+    const Vec3& p1 = mesh.positions[v[1]];
+    const Vec3& p2 = mesh.positions[v[2]];
+    SurfaceFrame frame;
+    frame.ng = normalize(lancer::cross(p1 - p0, p2 - p0));
+    const auto [uv0, uv1, uv2] = vertexUvs(mesh, v);
+    // dp/du and dp/dv: solve p0 - p2 = du02 dpdu + dv02 dpdv, p1 - p2 = du12 dpdu + dv12 dpdv.
+    const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
+    const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+    const float uvDet = duv02.x * duv12.y - duv02.y * duv12.x;
+    if (std::abs(uvDet) > 1e-12f) {
+        const float inv = 1 / uvDet;
+        frame.dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
+        frame.dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
+    } else {
+        coordinateSystem(frame.ng, frame.dpdu, frame.dpdv);  // uvs do not span the triangle
+    }
+    return frame;
+}
+
+Hit Triangle::makeHit(const TriangleMesh& mesh, std::uint32_t index, const TriangleIntersection& at,
+                      const SurfaceFrame& frame) {
     Hit hit;
     const std::uint32_t* v = &mesh.indices[3 * std::size_t{index}];
     const Vec3& p0 = mesh.positions[v[0]];
@@ -120,7 +150,7 @@ Hit Triangle::makeHit(const TriangleMesh& mesh, std::uint32_t index,
     hit.primitive = index;
     hit.p = b0 * p0 + b1 * p1 + b2 * p2;
     hit.pError = gamma(7) * (abs(b0 * p0) + abs(b1 * p1) + abs(b2 * p2));
-    hit.ng = normalize(lancer::cross(p1 - p0, p2 - p0));
+    hit.ng = frame.ng;
     hit.ns = hit.ng;
     if (!mesh.normals.empty()) {
         const Vec3 ns = b0 * mesh.normals[v[0]] + b1 * mesh.normals[v[1]] + b2 * mesh.normals[v[2]];
@@ -132,22 +162,10 @@ Hit Triangle::makeHit(const TriangleMesh& mesh, std::uint32_t index,
         if (complete && lengthSquared(ns) > 0)
             hit.ns = dot(ns, hit.ng) < 0 ? -normalize(ns) : normalize(ns);
     }
-
-    const Vec2 uv0 = mesh.uvs.empty() ? Vec2(0, 0) : mesh.uvs[v[0]];
-    const Vec2 uv1 = mesh.uvs.empty() ? Vec2(1, 0) : mesh.uvs[v[1]];
-    const Vec2 uv2 = mesh.uvs.empty() ? Vec2(0, 1) : mesh.uvs[v[2]];
+    const auto [uv0, uv1, uv2] = vertexUvs(mesh, v);
     hit.setUv(b0 * uv0 + b1 * uv1 + b2 * uv2);
-    // dp/du and dp/dv: solve p0 - p2 = du02 dpdu + dv02 dpdv, p1 - p2 = du12 dpdu + dv12 dpdv.
-    const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
-    const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
-    const float uvDet = duv02.x * duv12.y - duv02.y * duv12.x;
-    if (std::abs(uvDet) > 1e-12f) {
-        const float inv = 1 / uvDet;
-        hit.dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
-        hit.dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
-    } else {
-        coordinateSystem(hit.ng, hit.dpdu, hit.dpdv);  // uvs do not span the triangle
-    }
+    hit.dpdu = frame.dpdu;
+    hit.dpdv = frame.dpdv;
     if (!mesh.materials.empty()) hit.material = mesh.materials[mesh.faceMaterials[index]].get();
     return hit;
 }

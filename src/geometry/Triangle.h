@@ -44,10 +44,17 @@ public:
     static std::optional<TriangleIntersection> intersect(const Vec3& p0, const Vec3& p1,
                                                          const Vec3& p2, const Ray& ray,
                                                          float tMax);
-    // The hit record of triangle `index` of `mesh` (primitive `index`), with the mesh's material
-    // for it, if the mesh has materials; `shape` is left to the caller.
+    // What every hit of a triangle shares: its unit geometric normal (the normalized edge
+    // product) and the derivatives of its points along its uvs.
+    struct SurfaceFrame {
+        Vec3 ng, dpdu, dpdv;
+    };
+    static SurfaceFrame surfaceFrameOf(const TriangleMesh& mesh, std::uint32_t index);
+    // The hit record of triangle `index` of `mesh` (primitive `index`), whose surfaceFrameOf is
+    // `frame`, with the mesh's material for it, if the mesh has materials; `shape` is left to the
+    // caller.
     static Hit makeHit(const TriangleMesh& mesh, std::uint32_t index,
-                       const TriangleIntersection& at);
+                       const TriangleIntersection& at, const SurfaceFrame& frame);
     // A point uniformly distributed over the triangle's area for u uniform in [0,1)^2 (the
     // square-root warp onto barycentrics), with its density per unit area and front normal.
     static float areaOf(const std::array<Vec3, 3>& vertices);
@@ -65,8 +72,8 @@ private:
 
     std::shared_ptr<const TriangleMesh> mesh_;
     std::uint32_t index_;
-    // The triangle's UniformSampling, kept: a light samples its shape many times.
-    Vec3 frontNormal_;
+    // Kept, as every hit and sample of the triangle would work them out again.
+    SurfaceFrame frame_;
     float inverseArea_;
 };
 

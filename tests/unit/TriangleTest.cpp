@@ -10,6 +10,7 @@
 
 #include "IntersectInto.h"
 #include "TestSupport.h"
+#include "accel/Mesh.h"
 #include "geometry/Triangle.h"
 #include "math/Float.h"
 
@@ -327,6 +328,45 @@ TEST(TriangleTest, SamplesCarryTheNormalizedEdgeProductAndOneOverTheArea) {
             EXPECT_EQ(std::bit_cast<std::uint32_t>(s.pdf), std::bit_cast<std::uint32_t>(density))
                 << "triangle " << i << " of scale " << scale;
         }
+    }
+}
+
+// A triangle keeps the frame its hits share (normal, dp/du, dp/dv): its records must be, to the
+// bit, those of the same triangle in a mesh, which works them out at every hit.
+TEST(TriangleTest, RecordsEqualThoseOfTheSameTriangleInAMesh) {
+    Random random(72);
+    for (int i = 0; i < 500; ++i) {
+        const Vertices v{random.unitVector(), random.unitVector(), random.unitVector()};
+        std::optional<std::array<Vec2, 3>> uvs;
+        if (i % 2 == 0) {
+            uvs.emplace();
+            for (Vec2& uv : *uvs)
+                uv = Vec2(static_cast<float>(random.uniform(-2, 2)),
+                          static_cast<float>(random.uniform(-2, 2)));
+        }
+        if (i % 10 == 4) (*uvs)[2] = (*uvs)[1];  // uvs that do not span the triangle
+        const Triangle triangle(v, nullptr, std::nullopt, uvs);
+        TriangleMesh triangles;
+        triangles.positions.assign(v.begin(), v.end());
+        if (uvs) triangles.uvs.assign(uvs->begin(), uvs->end());
+        triangles.indices = {0, 1, 2};
+        triangles.faceMaterials = {0};
+        const Mesh mesh(std::move(triangles));
+
+        const Vec3 target = pointAt(v, 0.3f, 0.3f);
+        const Vec3 origin = target + 2.0f * random.unitVector();
+        const Ray towards{origin, target - origin};
+        Hit fromTriangle, fromMesh;
+        if (!test::intersectInto(triangle, towards, kInfinity, fromTriangle)) continue;
+        ASSERT_TRUE(test::intersectInto(mesh, towards, kInfinity, fromMesh)) << "triangle " << i;
+        EXPECT_EQ(fromTriangle.t, fromMesh.t);
+        EXPECT_EQ(fromTriangle.p, fromMesh.p);
+        EXPECT_EQ(fromTriangle.ng, fromMesh.ng) << "triangle " << i;
+        EXPECT_EQ(fromTriangle.ns, fromMesh.ns);
+        EXPECT_EQ(fromTriangle.dpdu, fromMesh.dpdu) << "triangle " << i;
+        EXPECT_EQ(fromTriangle.dpdv, fromMesh.dpdv) << "triangle " << i;
+        EXPECT_EQ(fromTriangle.uv().x, fromMesh.uv().x);
+        EXPECT_EQ(fromTriangle.uv().y, fromMesh.uv().y);
     }
 }
 
