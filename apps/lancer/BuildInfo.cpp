@@ -49,10 +49,14 @@ const char* simdLevel() {
 }  // namespace
 
 std::string BuildInfo::describe() {
+    return describeRendering() + ", " + Viewer::libraryVersion();
+}
+
+std::string BuildInfo::describeRendering() {
     return std::string("lancer ") + LANCER_VERSION + "\nbuilt with " + compiler() + " for " +
            simdLevel() + (CpuFeatures::avx2() ? " (AVX2 kernels on this CPU)" : "") + ", " +
-           Cluster::describe() + "\nlibraries: " + IoLibraries::versions() + ", " +
-           Viewer::libraryVersion() + ", oneTBB " + TBB_VERSION_STRING + ", CLI11 " + CLI11_VERSION;
+           Cluster::describe() + "\nlibraries: " + IoLibraries::versions() + ", oneTBB " +
+           TBB_VERSION_STRING + ", CLI11 " + CLI11_VERSION;
 }
 
 }  // namespace lancer

@@ -9,6 +9,9 @@ namespace lancer {
 class BuildInfo {
 public:
     static std::string describe();
+    // The same without the window's library (SDL2, which is loaded only to be asked its version):
+    // what of the build can change an image.
+    static std::string describeRendering();
 };
 
 }  // namespace lancer

@@ -17,6 +17,8 @@ struct SDL_Window;
 
 namespace lancer {
 
+class SdlLibrary;
+
 // A window (SDL2) showing an image while something computes it. The image and the status in the
 // title can be changed from any thread (a renderer's workers); the window itself belongs to the
 // thread that opened it, which must call poll() often to keep it alive and up to date.
@@ -24,10 +26,10 @@ class Viewer {
 public:
     // A window titled `name` for a width x height image, scaled down to fit the screen if larger,
     // showing it as 8-bit outputs store it (through `toneMapper`). Null, with the reason in
-    // `error`, when there is no display to open it on.
+    // `error`, when there is no display to open it on or the SDL2 library cannot be loaded.
     static std::unique_ptr<Viewer> open(const std::string& name, int width, int height,
                                         const ToneMapper& toneMapper, std::string& error);
-    // "SDL2 2.26.5": the version of the SDL library linked, for lancer --version.
+    // "SDL2 2.26.5": the version of the SDL library loaded, for lancer --version.
     static std::string libraryVersion();
     ~Viewer();
     Viewer(const Viewer&) = delete;
@@ -51,8 +53,10 @@ public:
     std::vector<ViewerEvent> poll(std::chrono::milliseconds timeout);
 
 private:
-    Viewer(const std::string& name, int width, int height, const ToneMapper& toneMapper);
+    Viewer(const SdlLibrary& sdl, const std::string& name, int width, int height,
+           const ToneMapper& toneMapper);
 
+    const SdlLibrary& sdl_;
     std::string name_;
     ToneMapper toneMapper_;
     SDL_Window* window_ = nullptr;

@@ -352,7 +352,7 @@ std::optional<RadiositySolution> prepareRadiosity(const Scene& scene, RadiosityS
 std::uint64_t renderFingerprint(const Scene& scene, const RenderOptions& renderOptions,
                                 const PixelWindow& window, const Options& options, int frame) {
     Fingerprint f;
-    f.addText(BuildInfo::describe());
+    f.addText(BuildInfo::describeRendering());
 #ifdef __linux__
     f.addFile("/proc/self/exe");
 #endif
@@ -692,7 +692,7 @@ int main(int argc, char** argv) {
             names += " " + name;
     }
     app.footer(names);
-    app.set_version_flag("--version", BuildInfo::describe());
+    app.set_version_flag("--version", [] { return BuildInfo::describe(); });
     app.add_option("scene", options.scene, "Scene file (JSON, see docs/SCENE-FORMAT.md)")
         ->required();
     app.add_option(

@@ -418,5 +418,29 @@ TEST(WindowWithoutDisplay, WarnsOnceAndRendersTheSameImage) {
     EXPECT_EQ(readFile(folder / "window.png"), readFile(folder / "plain.png"));
 }
 
+// SDL2 and its libraries (X11, Wayland, audio) are loaded only when a window is asked for (or
+// lancer --version names its version): they would double the start-up of every other run. The
+// dynamic loader's own log (glibc's LD_DEBUG) says which libraries a run loaded.
+TEST(WindowLibrary, IsLoadedOnlyWhenAWindowIsAskedFor) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    const std::string display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
+    unsetenv("DISPLAY");  // the window is asked for, not opened: the library is loaded all the same
+    setenv("LD_DEBUG", "files", 1);
+    const RunResult plain = runLancer(quickRender("plain.png"), folder.path());
+    const RunResult windowed = runLancer(withWindow(quickRender("window.png")), folder.path());
+    const RunResult version = runLancer({"--version"}, folder.path());
+    unsetenv("LD_DEBUG");
+    if (!display.empty()) setenv("DISPLAY", display.c_str(), 1);
+
+    ASSERT_EQ(plain.exitStatus, 0) << plain;
+    if (plain.standardError.find("libfreeimage") == std::string::npos)
+        GTEST_SKIP() << "the dynamic loader does not log the libraries it loads (LD_DEBUG)";
+    EXPECT_EQ(plain.standardError.find("libSDL2"), std::string::npos) << plain;
+    EXPECT_NE(windowed.standardError.find("libSDL2"), std::string::npos) << windowed;
+    EXPECT_NE(version.standardError.find("libSDL2"), std::string::npos) << version;
+    EXPECT_NE(version.standardOutput.find("SDL2 2."), std::string::npos) << version;
+}
+
 }  // namespace
 }  // namespace lancer::test
