@@ -28,16 +28,25 @@ float Shape::areaToSolidAngle(float areaPdf, float distanceSquared, float cosSur
     return cosine > 0 ? areaPdf * distanceSquared / cosine : 0;
 }
 
-std::optional<ShapeSample> Shape::sample(std::uint32_t primitive, const Vec3& reference,
-                                         const Vec2& u) const {
-    std::optional<ShapeSample> s = sample(primitive, u);
-    if (!s) return std::nullopt;
-    const Vec3 toSurface = s->p - reference;
+std::optional<DirectionSample> Shape::seenFrom(const Vec3& reference, const ShapeSample& at) {
+    const Vec3 toSurface = at.p - reference;
     const float distanceSquared = lengthSquared(toSurface);
     if (!(distanceSquared > 0)) return std::nullopt;  // the reference point itself
-    s->pdf = areaToSolidAngle(s->pdf, distanceSquared,
-                              dot(s->n, toSurface) / std::sqrt(distanceSquared));
-    if (!(s->pdf > 0) || !std::isfinite(s->pdf)) return std::nullopt;
+    return DirectionSample{at, toSurface / std::sqrt(distanceSquared)};
+}
+
+std::optional<DirectionSample> Shape::sample(std::uint32_t primitive, const Vec3& reference,
+                                             const Vec2& u) const {
+    const std::optional<ShapeSample> onSurface = sample(primitive, u);
+    if (!onSurface) return std::nullopt;
+    std::optional<DirectionSample> s = seenFrom(reference, *onSurface);
+    if (!s) return std::nullopt;
+    // The cosine at the surface from the unnormalized direction (shared with seenFrom's work).
+    const Vec3 toSurface = s->at.p - reference;
+    const float distanceSquared = lengthSquared(toSurface);
+    s->at.pdf = areaToSolidAngle(s->at.pdf, distanceSquared,
+                                 dot(s->at.n, toSurface) / std::sqrt(distanceSquared));
+    if (!(s->at.pdf > 0) || !std::isfinite(s->at.pdf)) return std::nullopt;
     return s;
 }
 

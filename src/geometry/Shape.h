@@ -87,10 +87,11 @@ public:
     virtual float areaPdf(std::uint32_t primitive, const Hit& onSurface) const;
 
     // A point of the primitive for lighting `reference`, with its density per unit solid angle
-    // seen from there. By default the area sample converted; shapes may sample better (the
-    // sphere samples the cone it subtends).
-    virtual std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec3& reference,
-                                              const Vec2& u) const;
+    // seen from there and the direction to it; nothing if the point is the reference point. By
+    // default the area sample converted; shapes may sample better (the sphere samples the cone
+    // it subtends).
+    virtual std::optional<DirectionSample> sample(std::uint32_t primitive, const Vec3& reference,
+                                                  const Vec2& u) const;
     // The solid-angle density with which sample(primitive, reference, ·) picks the direction wi
     // that reaches the surface at `onSurface`.
     virtual float pdf(std::uint32_t primitive, const Vec3& reference, const Vec3& wi,
@@ -110,6 +111,9 @@ protected:
     // A density per unit area at a point seen from distance sqrt(distanceSquared), at cosine
     // cosSurface to the surface's normal, as a density per unit solid angle: 0 edge-on.
     static float areaToSolidAngle(float areaPdf, float distanceSquared, float cosSurface);
+    // The sample `at` as seen from `reference` (its density left as it is); nothing if `at` is the
+    // reference point.
+    static std::optional<DirectionSample> seenFrom(const Vec3& reference, const ShapeSample& at);
 
 private:
     const Material* material_;

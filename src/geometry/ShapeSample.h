@@ -11,4 +11,12 @@ struct ShapeSample {
     float pdf;  // its density: per unit area, or per unit solid angle seen from a reference point
 };
 
+// A point of a shape sampled as seen from a reference point: the point, with its density per unit
+// solid angle, and the unit direction from the reference point to it (which a light's sample
+// needs too: worked out once).
+struct DirectionSample {
+    ShapeSample at;
+    Vec3 wi;
+};
+
 }  // namespace lancer

@@ -126,8 +126,8 @@ float Sphere::coneDensity(const Vec3& p) const {
     return static_cast<float>(1 / (2 * std::numbers::pi * oneMinusCosConeAngle(p)));
 }
 
-std::optional<ShapeSample> Sphere::sample(std::uint32_t primitive, const Vec3& reference,
-                                          const Vec2& u) const {
+std::optional<DirectionSample> Sphere::sample(std::uint32_t primitive, const Vec3& reference,
+                                              const Vec2& u) const {
     if (containsOrTouches(reference)) return Shape::sample(primitive, reference, u);
 
     // Uniform within the cone: 1 - cos(theta) uniform in [0, 1 - cos(theta_max)].
@@ -148,7 +148,8 @@ std::optional<ShapeSample> Sphere::sample(std::uint32_t primitive, const Vec3& r
     const double offAxisSquared = lengthSquared(toCenter - along * wi);
     const double t = along - std::sqrt(std::max(0.0, r * r - offAxisSquared));
     const Vec3d onSphere = Vec3d(reference) + t * wi;
-    return ShapeSample{Vec3(onSphere), Vec3(normalize(onSphere - center)), coneDensity(reference)};
+    return seenFrom(reference,
+                    {Vec3(onSphere), Vec3(normalize(onSphere - center)), coneDensity(reference)});
 }
 
 float Sphere::pdf(std::uint32_t primitive, const Vec3& reference, const Vec3& wi,

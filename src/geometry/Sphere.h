@@ -30,8 +30,8 @@ public:
 
     float area(std::uint32_t primitive) const override;
     std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const override;
-    std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec3& reference,
-                                      const Vec2& u) const override;
+    std::optional<DirectionSample> sample(std::uint32_t primitive, const Vec3& reference,
+                                          const Vec2& u) const override;
     float pdf(std::uint32_t primitive, const Vec3& reference, const Vec3& wi,
               const Hit& onSurface) const override;
     // A latitude-longitude grid of chords, as fine as the patch size asks.

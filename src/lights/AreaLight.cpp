@@ -16,16 +16,14 @@ AreaLight::AreaLight(const Shape& shape, std::uint32_t primitive, const Color& r
 
 LightSample AreaLight::sample(const Vec3& p, const Vec2& u) const {
     LightSample s;
-    const std::optional<ShapeSample> onLight = shape_.sample(primitive_, p, u);
-    if (!onLight) return s;
-    const Vec3 toLight = onLight->p - p;
-    const float distanceSquared = lengthSquared(toLight);
-    if (!(distanceSquared > 0)) return s;  // p on the light itself: no direction, no light
-    s.position = onLight->p;
-    s.wi = toLight / std::sqrt(distanceSquared);
-    s.pdf = onLight->pdf;
+    // Nothing for p on the light itself: no direction, no light.
+    const std::optional<DirectionSample> towards = shape_.sample(primitive_, p, u);
+    if (!towards) return s;
+    s.position = towards->at.p;
+    s.wi = towards->wi;
+    s.pdf = towards->at.pdf;
     // A one-sided emitter seen from behind shows its dark back.
-    const bool seesEmittingSide = shape_.emitsOnBothSides() || dot(onLight->n, s.wi) < 0;
+    const bool seesEmittingSide = shape_.emitsOnBothSides() || dot(towards->at.n, s.wi) < 0;
     if (!seesEmittingSide || !(s.pdf > 0) || !std::isfinite(s.pdf)) return s;
     s.irradiance = radiance(p, s) / s.pdf;
     return s;

@@ -349,9 +349,11 @@ TEST_P(ShapeContract, SolidAngleDensitiesAgreeWithTheSamplesAndIntegrateToOne) {
         for (int i = 0; i < 100; ++i) {
             const Vec2 u(static_cast<float>(random.uniform()),
                          static_cast<float>(random.uniform()));
-            const auto s = shape->sample(primitive, reference, u);
-            if (!s) continue;
+            const auto seen = shape->sample(primitive, reference, u);
+            if (!seen) continue;
+            const ShapeSample* s = &seen->at;
             const Vec3 wi = normalize(s->p - reference);
+            EXPECT_LT(length(seen->wi - wi), 1e-6f) << "the direction to the point";
             const auto hit = shape->intersect({reference, wi}, kInfinity);
             ASSERT_TRUE(hit);
             // Points hidden behind the surface, and grazing ones (where a point a rounding error
