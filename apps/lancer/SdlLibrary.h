@@ -37,7 +37,7 @@ namespace lancer {
 
 // The SDL2 library, loaded when first asked for (a window, or lancer --version) rather than with
 // the program: SDL2 brings some forty libraries of its own (X11, Wayland, audio), and loading them
-// took 6 of the 14 ms that a run of lancer spends starting up, in runs that mostly open no window.
+// took 5 of the 11 ms that a run of lancer spent starting up, in runs that mostly open no window.
 // (On Windows it is linked as usual, so that vcpkg puts SDL2.dll beside the program.) Its
 // functions are members of the same names: sdl.SDL_Init(...).
 class SdlLibrary {
