@@ -442,5 +442,34 @@ TEST(WindowLibrary, IsLoadedOnlyWhenAWindowIsAskedFor) {
     EXPECT_NE(version.standardOutput.find("SDL2 2."), std::string::npos) << version;
 }
 
+// Without a usable SDL2 library (here a damaged one found first), --window warns once and the
+// image is rendered as without it: the library is looked for only then, and its absence is not an
+// error.
+TEST(WindowLibrary, AMissingLibraryIsAWarningAndTheSameImage) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    folder.write("libs/libSDL2-2.0.so.0", "not a library");
+    const char* oldPath = std::getenv("LD_LIBRARY_PATH");
+    const std::string kept = oldPath ? oldPath : "";
+    setenv("LD_LIBRARY_PATH", (folder / "libs").c_str(), 1);
+    const RunResult windowed = runLancer(withWindow(quickRender("window.png")), folder.path());
+    if (oldPath)
+        setenv("LD_LIBRARY_PATH", kept.c_str(), 1);
+    else
+        unsetenv("LD_LIBRARY_PATH");
+
+    EXPECT_EQ(windowed.exitStatus, 0) << windowed;
+    const std::vector<std::string> lines = windowed.errorLines();
+    ASSERT_EQ(std::count_if(lines.begin(), lines.end(),
+                            [](const std::string& l) { return l.find("warning") != l.npos; }),
+              1)
+        << windowed;
+    EXPECT_NE(windowed.standardError.find("warning: --window: cannot load SDL2"), std::string::npos)
+        << windowed;
+    const RunResult plain = runLancer(quickRender("plain.png"), folder.path());
+    ASSERT_EQ(plain.exitStatus, 0) << plain;
+    EXPECT_EQ(readFile(folder / "window.png"), readFile(folder / "plain.png"));
+}
+
 }  // namespace
 }  // namespace lancer::test
