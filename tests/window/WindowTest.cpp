@@ -390,32 +390,57 @@ TEST_F(LiveWindow, AnImageLargerThanTheScreenGetsAWindowScaledDownToFit) {
     EXPECT_EQ(loadImage(folder_ / "out.png").width, 1000) << "the image keeps its size";
 }
 
-TEST(WindowWithoutDisplay, WarnsOnceAndRendersTheSameImage) {
-    // Whatever the test runner has, lancer gets no display at all.
-    const auto restore = [](const char* name, const char* value) {
-        if (value) setenv(name, value, 1);
-    };
-    const std::string display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
-    const std::string wayland =
-        std::getenv("WAYLAND_DISPLAY") ? std::getenv("WAYLAND_DISPLAY") : "";
-    unsetenv("DISPLAY");
-    unsetenv("WAYLAND_DISPLAY");
-    const TempFolder folder;
-    folder.write("scene.json", loadWhittedScene().dump());
-    const RunResult windowed = runLancer(withWindow(quickRender("window.png")), folder.path());
-    restore("DISPLAY", display.empty() ? nullptr : display.c_str());
-    restore("WAYLAND_DISPLAY", wayland.empty() ? nullptr : wayland.c_str());
+// An environment variable that lancer inherits set to `value` (unset for nullptr) until the end of
+// the scope, then as it was.
+class ScopedEnvironment {
+public:
+    ScopedEnvironment(const char* name, const char* value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old;
+        set(value);
+    }
+    ~ScopedEnvironment() { set(old_ ? old_->c_str() : nullptr); }
+    ScopedEnvironment(const ScopedEnvironment&) = delete;
+    ScopedEnvironment& operator=(const ScopedEnvironment&) = delete;
 
+private:
+    void set(const char* value) const {
+        if (value)
+            setenv(name_.c_str(), value, 1);
+        else
+            unsetenv(name_.c_str());
+    }
+
+    std::string name_;
+    std::optional<std::string> old_;
+};
+
+// A --window run that could not open its window: it ends well with one warning, which says
+// `warning`, and the image of the same render without --window.
+void expectOneWarningAndTheSameImage(const RunResult& windowed, const TempFolder& folder,
+                                     const std::string& warning) {
     EXPECT_EQ(windowed.exitStatus, 0) << windowed;
     const std::vector<std::string> lines = windowed.errorLines();
     ASSERT_EQ(std::count_if(lines.begin(), lines.end(),
                             [](const std::string& l) { return l.find("warning") != l.npos; }),
               1)
         << windowed;
-    EXPECT_NE(windowed.standardError.find("--window"), std::string::npos) << windowed;
+    EXPECT_NE(windowed.standardError.find(warning), std::string::npos) << windowed;
     const RunResult plain = runLancer(quickRender("plain.png"), folder.path());
     ASSERT_EQ(plain.exitStatus, 0) << plain;
     EXPECT_EQ(readFile(folder / "window.png"), readFile(folder / "plain.png"));
+}
+
+TEST(WindowWithoutDisplay, WarnsOnceAndRendersTheSameImage) {
+    const TempFolder folder;
+    folder.write("scene.json", loadWhittedScene().dump());
+    RunResult windowed;
+    {
+        // Whatever the test runner has, lancer gets no display at all.
+        const ScopedEnvironment noDisplay("DISPLAY", nullptr);
+        const ScopedEnvironment noWayland("WAYLAND_DISPLAY", nullptr);
+        windowed = runLancer(withWindow(quickRender("window.png")), folder.path());
+    }
+    expectOneWarningAndTheSameImage(windowed, folder, "--window");
 }
 
 // SDL2 and its libraries (X11, Wayland, audio) are loaded only when a window is asked for (or
@@ -424,14 +449,15 @@ TEST(WindowWithoutDisplay, WarnsOnceAndRendersTheSameImage) {
 TEST(WindowLibrary, IsLoadedOnlyWhenAWindowIsAskedFor) {
     const TempFolder folder;
     folder.write("scene.json", loadWhittedScene().dump());
-    const std::string display = std::getenv("DISPLAY") ? std::getenv("DISPLAY") : "";
-    unsetenv("DISPLAY");  // the window is asked for, not opened: the library is loaded all the same
-    setenv("LD_DEBUG", "files", 1);
-    const RunResult plain = runLancer(quickRender("plain.png"), folder.path());
-    const RunResult windowed = runLancer(withWindow(quickRender("window.png")), folder.path());
-    const RunResult version = runLancer({"--version"}, folder.path());
-    unsetenv("LD_DEBUG");
-    if (!display.empty()) setenv("DISPLAY", display.c_str(), 1);
+    RunResult plain, windowed, version;
+    {
+        // The window is asked for, not opened: the library is loaded all the same.
+        const ScopedEnvironment noDisplay("DISPLAY", nullptr);
+        const ScopedEnvironment loaderLog("LD_DEBUG", "files");
+        plain = runLancer(quickRender("plain.png"), folder.path());
+        windowed = runLancer(withWindow(quickRender("window.png")), folder.path());
+        version = runLancer({"--version"}, folder.path());
+    }
 
     ASSERT_EQ(plain.exitStatus, 0) << plain;
     if (plain.standardError.find("libfreeimage") == std::string::npos)
@@ -449,26 +475,12 @@ TEST(WindowLibrary, AMissingLibraryIsAWarningAndTheSameImage) {
     const TempFolder folder;
     folder.write("scene.json", loadWhittedScene().dump());
     folder.write("libs/libSDL2-2.0.so.0", "not a library");
-    const char* oldPath = std::getenv("LD_LIBRARY_PATH");
-    const std::string kept = oldPath ? oldPath : "";
-    setenv("LD_LIBRARY_PATH", (folder / "libs").c_str(), 1);
-    const RunResult windowed = runLancer(withWindow(quickRender("window.png")), folder.path());
-    if (oldPath)
-        setenv("LD_LIBRARY_PATH", kept.c_str(), 1);
-    else
-        unsetenv("LD_LIBRARY_PATH");
-
-    EXPECT_EQ(windowed.exitStatus, 0) << windowed;
-    const std::vector<std::string> lines = windowed.errorLines();
-    ASSERT_EQ(std::count_if(lines.begin(), lines.end(),
-                            [](const std::string& l) { return l.find("warning") != l.npos; }),
-              1)
-        << windowed;
-    EXPECT_NE(windowed.standardError.find("warning: --window: cannot load SDL2"), std::string::npos)
-        << windowed;
-    const RunResult plain = runLancer(quickRender("plain.png"), folder.path());
-    ASSERT_EQ(plain.exitStatus, 0) << plain;
-    EXPECT_EQ(readFile(folder / "window.png"), readFile(folder / "plain.png"));
+    RunResult windowed;
+    {
+        const ScopedEnvironment damagedFirst("LD_LIBRARY_PATH", (folder / "libs").c_str());
+        windowed = runLancer(withWindow(quickRender("window.png")), folder.path());
+    }
+    expectOneWarningAndTheSameImage(windowed, folder, "warning: --window: cannot load SDL2");
 }
 
 }  // namespace
