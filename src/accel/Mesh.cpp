@@ -172,6 +172,35 @@ bool Mesh::occluded(const Ray& ray, float tMax) const {
     return bvh_.occluded(ray, tMax, occludedLeaf, prefetchLeaf);
 }
 
+void Mesh::crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const {
+    const TriangleIntersector intersector(ray);
+    if (!intersector.canHit()) return;
+    const std::size_t first = crossings.size();
+    const auto collectLeaf = [&](std::uint32_t firstPack, std::uint32_t count, float tFar) {
+        for (std::uint32_t p = 0; p < packCount(count); ++p) {
+            const TrianglePack& pack = packs_[firstPack + p];
+            const PackHits hits = intersector.intersect(pack, leafLanes(p, count), tFar);
+            for (int lane = 0; lane < TrianglePack::kLanes; ++lane)
+                if (hits.lanes >> lane & 1)
+                    crossings.push_back(SurfaceCrossing{hits.t[lane], hits.t[lane],
+                                                        pack.triangle[lane], hits.b0[lane],
+                                                        hits.b1[lane], hits.b2[lane]});
+        }
+        return false;  // every leaf the segment reaches
+    };
+    const auto prefetchLeaf = [&](std::uint32_t firstPack) { prefetchPack(firstPack); };
+    bvh_.occluded(ray, tMax, collectLeaf, prefetchLeaf);
+    // A line through an edge (or a vertex) meets every triangle there at the same t, computed
+    // from the same shared vertices: one crossing of the surface.
+    const auto begin = crossings.begin() + static_cast<std::ptrdiff_t>(first);
+    std::sort(begin, crossings.end(),
+              [](const SurfaceCrossing& a, const SurfaceCrossing& b) { return a.t < b.t; });
+    crossings.erase(
+        std::unique(begin, crossings.end(),
+                    [](const SurfaceCrossing& a, const SurfaceCrossing& b) { return a.t == b.t; }),
+        crossings.end());
+}
+
 void Mesh::crossLine(const Ray& ray, LineCrossings& crossings) const {
     // Every hit of the ray forward, and of its reverse backward, each tested from the ray's own
     // origin as cross() tests it: the signs of t are those cross() sees.

@@ -40,6 +40,7 @@ public:
     // each call walks all its edges).
     bool isSolid() const override;
     void crossLine(const Ray& ray, LineCrossings& crossings) const override;
+    void crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const override;
     bool emitsOnBothSides() const override { return false; }
     std::uint32_t primitiveCount() const override {
         return static_cast<std::uint32_t>(triangles_.triangleCount());

@@ -115,6 +115,19 @@ std::optional<SurfaceCrossing> Cone::cross(const Ray& ray, float tMax) const {
     return nearest;
 }
 
+void Cone::crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const {
+    const SideCrossings side = sideCrossings(ray);
+    for (int i = 0; i < side.count; ++i) {
+        const SurfaceCrossing& c = side.crossings[static_cast<std::size_t>(i)].crossing;
+        if (c.t > 0 && c.t < tMax) crossings.push_back(c);
+    }
+    for (std::size_t i = 0; i < caps_.size(); ++i)
+        if (std::optional<SurfaceCrossing> cap = caps_[i]->cross(ray, tMax)) {
+            cap->primitive = static_cast<std::uint32_t>(1 + i);
+            crossings.push_back(*cap);
+        }
+}
+
 void Cone::crossLine(const Ray& ray, LineCrossings& crossings) const {
     const std::size_t first = crossings.size();
     const SideCrossings side = sideCrossings(ray);

@@ -38,6 +38,7 @@ public:
     // Closed, it is a solid.
     bool isSolid() const override { return !caps_.empty(); }
     void crossLine(const Ray& ray, LineCrossings& crossings) const override;
+    void crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const override;
     // A closed cone gives light to its outside only; an open one is a two-sided surface.
     bool emitsOnBothSides() const override { return caps_.empty(); }
     std::uint32_t primitiveCount() const override {

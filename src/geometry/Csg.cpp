@@ -244,6 +244,15 @@ std::optional<SurfaceCrossing> Csg::cross(const Ray& ray, float tMax) const {
     return nearest;
 }
 
+void Csg::crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const {
+    sweepLine(ray, 0, tMax, [&](const SurfaceCrossing& surface, bool) {
+        if (surface.t <= 0) return false;  // behind the origin: on to the next
+        if (surface.t >= tMax) return true;
+        crossings.push_back(surface);
+        return false;
+    });
+}
+
 void Csg::crossLine(const Ray& ray, LineCrossings& crossings) const {
     constexpr double kWholeLine = std::numeric_limits<double>::infinity();
     sweepLine(ray, -kWholeLine, kWholeLine, [&](const SurfaceCrossing& surface, bool entering) {

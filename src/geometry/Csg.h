@@ -42,6 +42,7 @@ public:
     Bounds3 bounds() const override { return bounds_; }
     bool isSolid() const override { return true; }
     void crossLine(const Ray& ray, LineCrossings& crossings) const override;
+    void crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const override;
     // A solid gives light to its outside only.
     bool emitsOnBothSides() const override { return false; }
     std::uint32_t primitiveCount() const override { return firstPrimitive_.back(); }

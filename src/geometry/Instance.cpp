@@ -59,6 +59,16 @@ std::optional<SurfaceCrossing> Instance::cross(const Ray& ray, float tMax) const
     return crossing;
 }
 
+void Instance::crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const {
+    float shift;
+    const Ray local = toObject(ray, shift);
+    const std::size_t first = crossings.size();
+    shape_->crossSegment(local, tMax - shift, crossings);
+    // In float, as cross() gives it.
+    for (std::size_t i = first; i < crossings.size(); ++i)
+        crossings[i].t = static_cast<float>(crossings[i].t) + shift;
+}
+
 void Instance::crossLine(const Ray& ray, LineCrossings& crossings) const {
     float shift;
     const Ray local = toObject(ray, shift);

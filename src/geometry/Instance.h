@@ -22,6 +22,7 @@ public:
     bool isBounded() const override { return shape_->isBounded(); }
     bool isSolid() const override { return shape_->isSolid(); }
     void crossLine(const Ray& ray, LineCrossings& crossings) const override;
+    void crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const override;
     bool emitsOnBothSides() const override { return shape_->emitsOnBothSides(); }
     std::uint32_t primitiveCount() const override { return shape_->primitiveCount(); }
     // The instance's own material, when it has one, replaces the shape's.

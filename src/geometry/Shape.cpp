@@ -19,6 +19,19 @@ bool Shape::contains(const Vec3& p) const {
     return depth > 0;
 }
 
+void Shape::crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const {
+    if (!isSolid()) {
+        if (const std::optional<SurfaceCrossing> crossing = cross(ray, tMax))
+            crossings.push_back(*crossing);
+        return;
+    }
+    thread_local LineCrossings line;  // (crossLine never asks crossSegment)
+    line.clear();
+    crossLine(ray, line);
+    for (const LineCrossing& c : line)
+        if (c.crossing.t > 0 && c.crossing.t < tMax) crossings.push_back(c.crossing);
+}
+
 float Shape::areaPdf(std::uint32_t primitive, const Hit&) const {
     return 1 / area(primitive);
 }

@@ -49,6 +49,12 @@ public:
     // Whether anything is hit with 0 < t < tMax: shadow rays, which need no hit record and can
     // stop at the first hit found.
     virtual bool occluded(const Ray& ray, float tMax) const { return cross(ray, tMax).has_value(); }
+    // Appends every crossing with 0 < t < tMax, in no particular order, each as cross() would
+    // find it were it the nearest (so record() takes it): what a shadow ray through transparent
+    // surfaces multiplies, found in one search. By default a solid's crossings of its line
+    // (crossLine) within the segment, and for any other shape the one crossing cross() finds:
+    // other shapes a line can cross more than once override it.
+    virtual void crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const;
     // The corners of a shape that is one triangle crossed as Triangle::intersect crosses them, in
     // that order: a scene may test it itself, with the ray's set-up for triangles made once for
     // all it meets (the same test, so the same crossings). Nothing for any other shape.

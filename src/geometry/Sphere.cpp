@@ -57,6 +57,13 @@ std::optional<SurfaceCrossing> Sphere::cross(const Ray& ray, float tMax) const {
     return SurfaceCrossing{t, t};
 }
 
+void Sphere::crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const {
+    const std::optional<std::pair<double, double>> roots = lineRoots(ray, Roots::ahead);
+    if (!roots) return;
+    for (const double t : {roots->first, roots->second})
+        if (t > 0 && t < tMax) crossings.push_back(SurfaceCrossing{t, t});
+}
+
 void Sphere::crossLine(const Ray& ray, LineCrossings& crossings) const {
     const std::optional<std::pair<double, double>> roots = lineRoots(ray, Roots::all);
     if (!roots) return;

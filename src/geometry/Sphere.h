@@ -27,6 +27,7 @@ public:
     Bounds3 bounds() const override;
     bool isSolid() const override { return true; }
     void crossLine(const Ray& ray, LineCrossings& crossings) const override;
+    void crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const override;
 
     float area(std::uint32_t primitive) const override;
     std::optional<ShapeSample> sample(std::uint32_t primitive, const Vec2& u) const override;

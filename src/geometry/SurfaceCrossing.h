@@ -1,6 +1,7 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 namespace lancer {
 
@@ -12,5 +13,7 @@ struct SurfaceCrossing {
     std::uint32_t primitive = 0;   // which primitive was crossed
     float b0 = 0, b1 = 0, b2 = 0;  // the shape's own numbers there (a triangle's barycentrics)
 };
+
+using SurfaceCrossings = std::vector<SurfaceCrossing>;
 
 }  // namespace lancer

@@ -199,6 +199,13 @@ std::optional<SurfaceCrossing> Torus::cross(const Ray& ray, float tMax) const {
     return nearest;
 }
 
+void Torus::crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const {
+    visitCrossings(ray, 0, tMax, [&](double t, bool) {
+        if (t > 0 && t < tMax) crossings.push_back(SurfaceCrossing{t, t, 0});
+        return false;
+    });
+}
+
 void Torus::crossLine(const Ray& ray, LineCrossings& crossings) const {
     constexpr double kWholeLine = std::numeric_limits<double>::infinity();
     visitCrossings(ray, -kWholeLine, kWholeLine, [&](double t, bool entering) {

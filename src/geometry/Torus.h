@@ -30,6 +30,7 @@ public:
     Bounds3 bounds() const override;
     bool isSolid() const override { return true; }
     void crossLine(const Ray& ray, LineCrossings& crossings) const override;
+    void crossSegment(const Ray& ray, float tMax, SurfaceCrossings& crossings) const override;
     // A solid gives light to its outside only.
     bool emitsOnBothSides() const override { return false; }
     float area(std::uint32_t primitive) const override;

@@ -1,5 +1,6 @@
 #include "scene/Scene.h"
 
+#include <algorithm>
 #include <type_traits>
 #include <variant>
 
@@ -177,6 +178,35 @@ bool Scene::occluded(const Ray& ray, float tMax) const {
     for (const auto& shape : unboundedShapes_)
         if (shape->occluded(ray, tMax)) return true;
     return loneTriangles_.empty() ? occludedWith<false>(ray, tMax) : occludedWith<true>(ray, tMax);
+}
+
+bool Scene::crossSegment(const Ray& ray, float tMax, std::vector<SceneCrossing>& crossings) const {
+    crossings.clear();
+    thread_local SurfaceCrossings found;
+    // Whether light passes every crossing of the shape's.
+    const auto collect = [&](const Shape& shape) {
+        found.clear();
+        shape.crossSegment(ray, tMax, found);
+        for (const SurfaceCrossing& crossing : found) {
+            const Material* material = shape.primitiveMaterial(crossing.primitive);
+            if (material && !material->isTransmissive() && !material->hasCutOuts()) return false;
+            crossings.push_back({&shape, crossing});
+        }
+        return true;
+    };
+    // The planes first: a floor stops many shadow rays before the hierarchy is entered.
+    for (const auto& shape : unboundedShapes_)
+        if (!collect(*shape)) return false;
+    const auto blockedInLeaf = [&](std::uint32_t first, std::uint32_t count, float) {
+        for (std::uint32_t k = first; k < first + count; ++k)
+            if (!collect(*boundedShapes_[k])) return true;
+        return false;
+    };
+    if (bvh_->occluded(ray, tMax, blockedInLeaf, [](std::uint32_t) {})) return false;
+    std::sort(
+        crossings.begin(), crossings.end(),
+        [](const SceneCrossing& a, const SceneCrossing& b) { return a.crossing.t < b.crossing.t; });
+    return true;
 }
 
 template <bool kLoneTriangles>

@@ -96,6 +96,11 @@ public:
     Hit record(const Ray& ray, const SceneCrossing& crossing) const;
     // Whether anything is hit with 0 < t < tMax (cut-away points let the ray through).
     bool occluded(const Ray& ray, float tMax) const;
+    // For shadow rays through transparent surfaces, in one search: every crossing with
+    // 0 < t < tMax, in increasing t, into `crossings` (records are the caller's); false, and the
+    // crossings left unfinished, as soon as one is of a surface no light passes (an opaque
+    // material without cut-outs).
+    bool crossSegment(const Ray& ray, float tMax, std::vector<SceneCrossing>& crossings) const;
 
     // Whether some surface lets light through (shadow rays must then look past the first
     // surface they meet).

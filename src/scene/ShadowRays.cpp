@@ -1,6 +1,6 @@
 #include "scene/ShadowRays.h"
 
-#include <optional>
+#include <vector>
 
 #include "geometry/Shape.h"
 #include "materials/Material.h"
@@ -19,25 +19,25 @@ Color ShadowRays::transmittance(const Scene& scene, const Hit& from, const Light
     // Everything is opaque: the first blocker decides, and any blocker will do.
     if (!scene.hasTransmissiveMaterial())
         return unoccluded(scene, from, light, rayCount) ? Color(1) : Color(0);
+    ++rayCount;
+    const Ray ray = towards(from, light);
+    thread_local std::vector<SceneCrossing> crossings;
+    if (!scene.crossSegment(ray, reach(light), crossings)) return Color(0);
+    // Multiplied in the order the light meets them, so that the rounding does not depend on
+    // the order the search found them in.
     Color visibility(1);
-    Hit surface = from;
-    // Each crossing starts beyond the surface just crossed, so the walk always moves towards
-    // the light and ends.
-    for (;;) {
-        ++rayCount;
-        const Ray ray = towards(surface, light);
-        const std::optional<SceneCrossing> crossing = scene.cross(ray, reach(light));
-        if (!crossing) return visibility;
-        // An opaque surface stops the light: no record needed to know it.
-        const Material* material = crossing->shape->primitiveMaterial(crossing->crossing.primitive);
-        if (material && !material->isTransmissive() && !material->hasCutOuts()) return Color(0);
-        const Hit blocker = scene.record(ray, *crossing);
-        if (!blocker.material->isCutAway(blocker)) {
-            visibility *= blocker.material->transmission();
-            if (visibility.isBlack()) return visibility;
+    for (const SceneCrossing& crossing : crossings) {
+        const Material* material = crossing.shape->primitiveMaterial(crossing.crossing.primitive);
+        // Only a cut-out needs the record, to know whether the point is cut away.
+        if (!material || material->hasCutOuts()) {
+            const Hit surface = scene.record(ray, crossing);
+            material = surface.material;
+            if (material->isCutAway(surface)) continue;
         }
-        surface = blocker;
+        visibility *= material->transmission();
+        if (visibility.isBlack()) return visibility;
     }
+    return visibility;
 }
 
 }  // namespace lancer

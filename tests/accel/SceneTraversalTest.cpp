@@ -4,11 +4,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <random>
+#include <tuple>
 #include <vector>
 
 #include "BvhTestSupport.h"
@@ -16,6 +18,7 @@
 #include "geometry/Shape.h"
 #include "geometry/Sphere.h"
 #include "geometry/Triangle.h"
+#include "materials/BlinnPhongMaterial.h"
 #include "scene/Scene.h"
 
 namespace lancer::test {
@@ -118,6 +121,88 @@ TEST(SceneTraversal, ManyShapesMatchBruteForce) {
 TEST(SceneTraversal, ShapesOverAPlaneMatchBruteForce) {
     expectSceneMatchesBruteForce(5, true, 4);
     expectSceneMatchesBruteForce(60, true, 5);
+}
+
+// Every crossing of a segment with every shape tested one by one, in increasing t.
+std::vector<SceneCrossing> everyCrossing(const std::vector<const Shape*>& shapes, const Ray& ray,
+                                         float tMax) {
+    std::vector<SceneCrossing> all;
+    for (const Shape* shape : shapes) {
+        SurfaceCrossings crossings;
+        shape->crossSegment(ray, tMax, crossings);
+        for (const SurfaceCrossing& crossing : crossings)
+            all.push_back({shape, crossing});
+    }
+    std::stable_sort(all.begin(), all.end(), [](const SceneCrossing& a, const SceneCrossing& b) {
+        return a.crossing.t < b.crossing.t;
+    });
+    return all;
+}
+
+// The scene's one search along a segment finds what every shape finds on its own, in order;
+// with shapes of no material nothing stops it.
+TEST(SceneTraversal, ASegmentCrossesWhatEveryShapeCrossesInOrder) {
+    for (const auto& [count, withPlane, seed] :
+         {std::tuple{3, false, 11u}, {8, true, 12u}, {200, true, 13u}}) {
+        std::vector<const Shape*> shapes;
+        const Scene scene = makeScene(count, withPlane, seed, shapes);
+        const std::vector<Ray> rays =
+            randomRays(Bounds3(Vec3(0), Vec3(1)), kRayCount / 4, seed + 1);
+        std::mt19937 rng(seed + 2);
+        std::uniform_real_distribution<float> u(0, 1);
+        std::size_t several = 0;
+        std::vector<SceneCrossing> crossings;
+        for (const Ray& ray : rays) {
+            const float tMax = u(rng) < 0.5f ? kInfinity : 3 * u(rng);
+            const std::vector<SceneCrossing> expected = everyCrossing(shapes, ray, tMax);
+            ASSERT_TRUE(scene.crossSegment(ray, tMax, crossings)) << describe(ray);
+            ASSERT_EQ(crossings.size(), expected.size()) << describe(ray);
+            for (std::size_t k = 0; k < crossings.size(); ++k) {
+                ASSERT_EQ(crossings[k].crossing.t, expected[k].crossing.t) << describe(ray);
+                EXPECT_EQ(crossings[k].crossing.primitive, expected[k].crossing.primitive);
+            }
+            several += crossings.size() > 1;
+        }
+        EXPECT_GT(several, 20u) << count << " shapes";
+    }
+}
+
+// A segment that crosses an opaque surface anywhere on it is blocked; one that crosses only
+// glass lists it.
+TEST(SceneTraversal, ASegmentIsBlockedByAnyOpaqueSurfaceOnIt) {
+    Scene scene;
+    BlinnPhongMaterial::Parameters clear;
+    clear.transmission = Color(0.9f);
+    const Material* glass = scene.addMaterial(std::make_unique<BlinnPhongMaterial>(clear));
+    const Material* opaque = scene.addMaterial(std::make_unique<BlinnPhongMaterial>());
+    std::vector<const Shape*> shapes;
+    std::mt19937 rng(21);
+    std::uniform_real_distribution<float> u(0, 1);
+    for (int i = 0; i < 40; ++i) {
+        auto sphere = std::make_unique<Sphere>(Vec3(u(rng), u(rng), u(rng)), 0.05f + 0.1f * u(rng),
+                                               i % 4 == 0 ? opaque : glass);
+        shapes.push_back(sphere.get());
+        scene.addShape(std::move(sphere));
+    }
+    scene.buildAccelerationStructure();
+    int blocked = 0, throughGlass = 0;
+    std::vector<SceneCrossing> crossings;
+    for (const Ray& ray : randomRays(Bounds3(Vec3(0), Vec3(1)), kRayCount / 4, 22)) {
+        const float tMax = u(rng) < 0.5f ? kInfinity : 2 * u(rng);
+        const std::vector<SceneCrossing> expected = everyCrossing(shapes, ray, tMax);
+        const bool opaqueOnIt =
+            std::any_of(expected.begin(), expected.end(),
+                        [&](const SceneCrossing& c) { return c.shape->material() == opaque; });
+        ASSERT_EQ(scene.crossSegment(ray, tMax, crossings), !opaqueOnIt) << describe(ray);
+        if (opaqueOnIt) {
+            ++blocked;
+            continue;
+        }
+        ASSERT_EQ(crossings.size(), expected.size()) << describe(ray);
+        throughGlass += !crossings.empty();
+    }
+    EXPECT_GT(blocked, kRayCount / 40);
+    EXPECT_GT(throughGlass, kRayCount / 40);
 }
 
 // The crossing of a lone triangle the scene tests itself is the triangle's own, the record too.

@@ -424,6 +424,89 @@ TEST_P(ShapeContract, SolidsListTheCrossingsOfALineInOrderEachEnteringOrLeaving)
     EXPECT_GT(crossed, 100);
 }
 
+TEST_P(ShapeContract, ASegmentListsTheCrossingsThatWalkingItSurfaceBySurfaceFinds) {
+    Random random(23);
+    int compared = 0, severalCrossings = 0;
+    for (int i = 0; i < 600; ++i) {
+        const Vec3 aim = target(random);
+        const Vec3 origin = aim + static_cast<float>(random.uniform(-3, 5)) * random.unitVector();
+        Ray ray{origin, normalize(aim - origin)};
+        // Every third ray leaves the surface as a shadow ray does: spawned from a hit.
+        if (i % 3 == 0) {
+            const std::optional<Hit> hit = shape->intersect(ray, kInfinity);
+            if (!hit) continue;
+            ray = hit->spawnRay(random.unitVector());
+        }
+        const float tMax = i % 2 == 0 ? kInfinity : static_cast<float>(random.uniform(0.1, 4));
+        SurfaceCrossings crossings;
+        shape->crossSegment(ray, tMax, crossings);
+        std::sort(crossings.begin(), crossings.end(),
+                  [](const SurfaceCrossing& a, const SurfaceCrossing& b) { return a.t < b.t; });
+        // The walk shadow rays made before: the nearest crossing, then the nearest seen from a
+        // ray spawned beyond it, and so on to the segment's end.
+        std::vector<double> walked;
+        // Crossings within rounding of one another or of the segment's ends, and those at a
+        // grazing angle (where t moves far with the ray's origin), may be told apart differently
+        // by the two ways: those rays are left out.
+        bool unclear = false;
+        Ray from = ray;
+        for (int k = 0; k < 16; ++k) {
+            const float travelled = dot(from.origin - ray.origin, ray.direction);
+            const std::optional<SurfaceCrossing> next = shape->cross(from, tMax - travelled);
+            if (!next) break;
+            walked.push_back(travelled + next->t);
+            const Hit hit = shape->record(from, *next);
+            unclear = unclear || std::abs(dot(hit.ng, ray.direction)) < 0.01f;
+            from = hit.spawnRay(ray.direction);
+        }
+        const auto close = [&](const std::vector<double>& ts) {
+            for (std::size_t k = 0; k < ts.size(); ++k)
+                if (ts[k] < 1e-3 || std::abs(ts[k] - tMax) < 1e-3 * (1 + ts[k]) ||
+                    (k > 0 && ts[k] - ts[k - 1] < 1e-3))
+                    return true;
+            return false;
+        };
+        std::vector<double> listed;
+        for (const SurfaceCrossing& c : crossings) {
+            listed.push_back(c.t);
+            unclear = unclear || std::abs(dot(shape->record(ray, c).ng, ray.direction)) < 0.01f;
+        }
+        if (unclear || close(walked) || close(listed)) continue;
+        ++compared;
+        severalCrossings += crossings.size() > 1;
+        ASSERT_EQ(crossings.size(), walked.size()) << "ray " << i;
+        for (std::size_t k = 0; k < crossings.size(); ++k) {
+            EXPECT_NEAR(crossings[k].t, walked[k], 1e-4 * (1 + walked[k])) << "ray " << i;
+            ASSERT_LT(crossings[k].primitive, shape->primitiveCount());
+            // Each is a point of the surface that record() takes.
+            const Hit hit = shape->record(ray, crossings[k]);
+            EXPECT_LT(length(hit.p - ray.at(static_cast<float>(crossings[k].t))), 1e-3f);
+        }
+        // The first is the crossing cross() finds, to the bit.
+        if (!crossings.empty()) {
+            EXPECT_EQ(crossings.front().t, shape->cross(ray, tMax)->t) << "ray " << i;
+        }
+    }
+    EXPECT_GT(compared, 300);
+    if (shape->isSolid()) {
+        EXPECT_GT(severalCrossings, 50) << "rays through the solid";
+    }
+}
+
+TEST(ClosedMeshSegment, ALinePassingThroughAnEdgeCrossesTheSurfaceOnce) {
+    // Through the middle of two opposite faces of the cube, where each face's two triangles
+    // meet on their shared diagonal, and along a diagonal of one face (x = y on the +z face).
+    const std::unique_ptr<Shape> cube = makeClosedMesh(Vec3(0));
+    for (const Ray& ray : {Ray{Vec3(0, 0, 3), Vec3(0, 0, -1)}, Ray{Vec3(0, 0, -3), Vec3(0, 0, 1)},
+                           Ray{Vec3(0.3f, 0.3f, 3), Vec3(0, 0, -1)}}) {
+        SurfaceCrossings crossings;
+        cube->crossSegment(ray, kInfinity, crossings);
+        ASSERT_EQ(crossings.size(), 2u) << "entering and leaving";
+        EXPECT_NEAR(std::min(crossings[0].t, crossings[1].t), 2.2, 1e-6);
+        EXPECT_NEAR(std::max(crossings[0].t, crossings[1].t), 3.8, 1e-6);
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(AllShapes, ShapeContract, testing::ValuesIn(shapeCases()),
                          [](const testing::TestParamInfo<ShapeCase>& param) {
                              return param.param.name;
