@@ -85,16 +85,26 @@ Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sa
         }
         if (bounces >= maxDepth_) break;
 
-        // The same dimensions at every bounce, used or not, so that a pixel's samples stay
-        // stratified bounce by bounce.
-        const float uLightChoice = sampler.get1D();
-        const Vec2 uLight = sampler.get2D();
-        const float uLobe = sampler.get1D();
-        const Vec2 uBsdf = sampler.get2D();
-        const float uRoulette = sampler.get1D();
-
         const Bsdf bsdf(material, hit, wo);
-        if (bsdf.hasNonDeltaLobe())
+        const bool samplesLight = bsdf.hasNonDeltaLobe();
+        // The same requests at every bounce, so that each keeps its dimensions and a pixel's
+        // samples stay stratified bounce by bounce; those this bounce does not read are passed
+        // over, not drawn (the others get the same numbers either way).
+        const auto value = [&](bool read) {
+            if (read) return sampler.get1D();
+            sampler.skip();
+            return 0.0f;
+        };
+        const auto point = [&](bool read) {
+            if (read) return sampler.get2D();
+            sampler.skip();
+            return Vec2();
+        };
+        const float uLightChoice = value(samplesLight && lights_.choiceReadsU());
+        const Vec2 uLight = point(samplesLight);
+        const float uLobe = value(bsdf.readsLobeChoice());
+        const Vec2 uBsdf = sampler.get2D();
+        if (samplesLight)
             L += throughput * sampleOneLight(hit, bsdf, wo, uLightChoice, uLight, rayCount);
 
         const auto s = bsdf.sample(wo, uLobe, uBsdf);
@@ -106,13 +116,14 @@ Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sa
         lastVertex = hit.p;
         ray = hit.spawnRay(s->wi);
 
-        if (bounces + 1 >= kRouletteDepth) {
-            const float survival = std::min(1.0f, (throughput * etaScale).maxComponent());
-            if (survival < 1) {
-                const float q = std::max(0.05f, 1 - survival);
-                if (uRoulette < q) break;
-                throughput /= 1 - q;
-            }
+        const float survival = bounces + 1 >= kRouletteDepth
+                                   ? std::min(1.0f, (throughput * etaScale).maxComponent())
+                                   : 1.0f;
+        const float uRoulette = value(survival < 1);
+        if (survival < 1) {
+            const float q = std::max(0.05f, 1 - survival);
+            if (uRoulette < q) break;
+            throughput /= 1 - q;
         }
     }
     return L;

@@ -36,6 +36,16 @@ void Bsdf::weighLobes(Weights weights) {
         p = total > 0 ? p / total : 0;
 }
 
+bool Bsdf::readsLobeChoice() const {
+    const BsdfLobe* only = nullptr;
+    for (std::size_t i = 0; i < lobeCount_; ++i) {
+        if (probabilities_[i] == 0) continue;  // never chosen
+        if (only) return true;
+        only = lobes_[i];
+    }
+    return only && only->readsChoice();
+}
+
 bool Bsdf::hasNonDeltaLobe() const {
     return lobeCount_ > deltaCount_;
 }

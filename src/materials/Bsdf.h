@@ -65,6 +65,8 @@ public:
     // are those of the whole BSDF (the one-sample mixture); for a delta lobe, its own weight
     // and its selection probability.
     std::optional<BsdfSample> sample(const Vec3& wo, float uLobe, const Vec2& u) const;
+    // Whether sample() reads uLobe: to choose among lobes, or for the one lobe's own choice.
+    bool readsLobeChoice() const;
 
     // Whether some lobe can be evaluated for a given pair of directions (light sampling is then
     // worthwhile).

@@ -42,6 +42,8 @@ public:
     // takes them as they are).
     virtual std::optional<BsdfSample> sample(const Vec3& wo, float uChoice,
                                              const Vec2& u) const = 0;
+    // Whether sample() reads uChoice.
+    virtual bool readsChoice() const { return false; }
 
     // The classic local model that Whitted shades with, next to the physical f(), for a glossy
     // lobe (the Bsdf gives a diffuse lobe's kd cos(theta_L) itself; Whitted traces a delta

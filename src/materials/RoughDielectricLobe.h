@@ -27,6 +27,7 @@ public:
     float pdf(const Vec3& wo, const Vec3& wi) const override;
     // uChoice chooses between reflection and refraction.
     std::optional<BsdfSample> sample(const Vec3& wo, float uChoice, const Vec2& u) const override;
+    bool readsChoice() const override { return true; }
     // The reflection and the refraction about one visible normal, weighted kt F G1(wi) and
     // kt (1 - F) G1(wi).
     std::size_t tracedRays(const Vec3& wo, const Vec2& u,

@@ -169,7 +169,7 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
             // filter point keeps its place among the requests, undrawn.
             FilterSample film{{0, 0}, 1};
             if (maxSamples_ == 1)
-                sampler.skip2D();
+                sampler.skip();
             else
                 film = filterSampler_.sample(sampler.get2D());
             // A pinhole's lens sample keeps its place among the requests, undrawn.
@@ -177,7 +177,7 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
             if (camera.usesLensSample())
                 lens = sampler.get2D();
             else
-                sampler.skip2D();
+                sampler.skip();
             const std::optional<Ray> ray =
                 camera.generateRay(static_cast<float>(x) + 0.5f + film.offset.x,
                                    static_cast<float>(y) + 0.5f + film.offset.y, settings.width,

@@ -79,7 +79,10 @@ Sampler::RequestSeeds Sampler::nextRequestSeeds(RequestKind kind) {
     if (request < cachedRequestCount_) {
         const RequestSeeds& cached = cachedRequests_[static_cast<std::size_t>(request)];
         if (cached.kind == kind) return cached;
-        return hashRequestSeeds(request, kind);
+        const RequestSeeds seeds = hashRequestSeeds(request, kind);
+        if (cached.kind == RequestKind::skipped)
+            cachedRequests_[static_cast<std::size_t>(request)] = seeds;
+        return seeds;
     }
     const RequestSeeds seeds = hashRequestSeeds(request, kind);
     if (request < kCachedRequests) {
@@ -100,7 +103,7 @@ Vec2 Sampler::get2D() {
         toUnitFloat(reverseBits(laineKarrasPermutation(reversedSobolDimension1(index), ySeed)))};
 }
 
-void Sampler::skip2D() {
+void Sampler::skip() {
     // A request's seeds hash only the pixel and the request's number: a skipped one needs none.
     // It still takes its place in the cache, marked so that a point asked there later is hashed.
     const int request = request_++;

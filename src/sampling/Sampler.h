@@ -27,9 +27,10 @@ public:
     Vec2 get2D();
     // The next number of the current sample, in [0,1).
     float get1D();
-    // Passes over the next 2D point unseen (a pinhole's lens sample): the requests after it get
-    // the points they would get after get2D.
-    void skip2D();
+    // Passes over the next request, a point or a value, unseen (a pinhole's lens sample, a
+    // bounce's numbers it does not read): the requests after it get what they would get after
+    // get2D or get1D, and nothing is drawn.
+    void skip();
 
 private:
     enum class RequestKind : std::uint8_t { point, value, skipped };
@@ -44,7 +45,8 @@ private:
     // Hashing the seeds costs more than scrambling with them, and they depend only on the pixel
     // and the request: the pixel's samples share them, hashed by the first sample that makes the
     // request. The cache covers the requests of a few dozen bounces or area lights; the rest are
-    // hashed each time, as is a request whose kind differs from the one cached.
+    // hashed each time, as is a request whose kind differs from the one cached (one skipped
+    // where it was cached takes its place).
     static constexpr int kCachedRequests = 256;
 
     RequestSeeds nextRequestSeeds(RequestKind kind);

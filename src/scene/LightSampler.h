@@ -31,6 +31,8 @@ public:
     };
     // The light whose share of [0, 1) holds u; none when the scene has no light.
     std::optional<Choice> choose(float u) const;
+    // Whether choose() depends on u (not for one light or none).
+    bool choiceReadsU() const { return lights_.size() > 1; }
     // The probability of choosing `light` (0 for a light that is not sampled).
     float probability(const Light* light) const;
     // The light whose surface a hit lies on, or null.

@@ -128,6 +128,59 @@ TEST(Bsdf, MixtureOfDiffuseAndHighlightFollowsItsPdf) {
     }
 }
 
+// The path tracer draws uLobe only where sample() reads it: where it says it does not, every
+// uLobe gives the same sample, to the bit; where it says it does, some sample changes with it.
+TEST(Bsdf, ReadsTheLobeChoiceExactlyWhereTheSampleDependsOnIt) {
+    struct Case {
+        std::string name;
+        BlinnPhongMaterial::Parameters parameters;
+        bool reads;
+    };
+    BlinnPhongMaterial::Parameters roughGlass = MaterialAtHit::weights(0, 0, 1, 0, 0.9f);
+    roughGlass.roughness = 0.3f;
+    BlinnPhongMaterial::Parameters roughMetalAndGlass = roughGlass;
+    roughMetalAndGlass.reflection = Color(0.5f);
+    const std::vector<Case> cases = {
+        {"diffuse", MaterialAtHit::weights(0.6f, 0, 1, 0, 0), false},
+        {"highlight", MaterialAtHit::weights(0, 0.5f, 40, 0, 0), false},
+        {"mirror", MaterialAtHit::weights(0, 0, 1, 0.9f, 0), false},
+        {"glass (Fresnel chosen by u)", MaterialAtHit::weights(0, 0, 1, 0, 0.9f), false},
+        {"diffuse and highlight", MaterialAtHit::weights(0.3f, 0.5f, 40, 0, 0), true},
+        {"diffuse and mirror", MaterialAtHit::weights(0.3f, 0, 1, 0.5f, 0), true},
+        {"rough glass (Fresnel chosen by uLobe)", roughGlass, true},
+        {"rough metal and glass", roughMetalAndGlass, true},
+    };
+    const auto same = [](const std::optional<BsdfSample>& a, const std::optional<BsdfSample>& b) {
+        if (a.has_value() != b.has_value()) return false;
+        return !a || (a->wi == b->wi && a->f == b->f && a->pdf == b->pdf &&
+                      a->isDelta == b->isDelta && a->etaSquared == b->etaSquared);
+    };
+    for (const Case& c : cases) {
+        Hit hit;
+        hit.ng = Vec3(0, 0, 1);
+        hit.ns = hit.ng;
+        const BlinnPhongMaterial material(c.parameters);
+        const Bsdf bsdf(material, hit, hit.ns);
+        EXPECT_EQ(bsdf.readsLobeChoice(), c.reads) << c.name;
+        UniformSource random(11);
+        bool changed = false;
+        for (int k = 0; k < 400; ++k) {
+            const Vec3 wo = direction(static_cast<float>(170 * random.next()),
+                                      static_cast<float>(360 * random.next()));
+            const Vec2 u = random.next2D();
+            const std::optional<BsdfSample> first = bsdf.sample(wo, 0, u);
+            for (const float uLobe : {0.2f, 0.5f, 0.8f, kOneMinusEpsilon}) {
+                const bool equal = same(first, bsdf.sample(wo, uLobe, u));
+                if (!c.reads) {
+                    ASSERT_TRUE(equal) << c.name << ": uLobe " << uLobe << " changed the sample";
+                }
+                changed = changed || !equal;
+            }
+        }
+        EXPECT_EQ(changed, c.reads) << c.name;
+    }
+}
+
 // For a mixture and for a lobe alone (whose sample's f and pdf the Bsdf takes as the lobe gives
 // them), from the front and from the back.
 TEST(Bsdf, SampledValuesAreThoseOfFAndPdf) {

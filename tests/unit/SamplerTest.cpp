@@ -128,9 +128,40 @@ TEST(SamplerTest, APointPassedOverLeavesTheRequestsAfterItTheirPoints) {
         skipped.startSample(i);
         EXPECT_EQ(drawn.get2D(), skipped.get2D());
         drawn.get2D();
-        skipped.skip2D();
+        skipped.skip();
         EXPECT_EQ(drawn.get2D(), skipped.get2D());
         EXPECT_EQ(drawn.get1D(), skipped.get1D());
+    }
+}
+
+TEST(SamplerTest, AValuePassedOverLeavesTheRequestsAfterItTheirNumbers) {
+    // (The path tracer passes over the numbers a bounce does not read: the light choice with one
+    // light, the lobe choice of a single lobe, Russian roulette before it starts.)
+    Sampler drawn(7, 12, 34), skipped(7, 12, 34);
+    for (int i = 0; i < 16; ++i) {
+        drawn.startSample(i);
+        skipped.startSample(i);
+        drawn.get1D();
+        skipped.skip();
+        EXPECT_EQ(drawn.get2D(), skipped.get2D());
+        drawn.get1D();
+        skipped.skip();
+        EXPECT_EQ(drawn.get1D(), skipped.get1D());
+    }
+}
+
+TEST(SamplerTest, AValuePassedOverByOneSampleIsDrawnByTheNext) {
+    Sampler mixed(5, 2, 3);
+    mixed.startSample(0);
+    for (int request = 0; request < 300; ++request)
+        mixed.skip();
+    for (int i = 1; i < 4; ++i) {
+        mixed.startSample(i);
+        Sampler fresh(5, 2, 3);
+        fresh.startSample(i);
+        for (int request = 0; request < 300; ++request) {
+            EXPECT_EQ(mixed.get1D(), fresh.get1D());
+        }
     }
 }
 
@@ -140,7 +171,7 @@ TEST(SamplerTest, APointPassedOverByOneSampleIsDrawnByTheNext) {
     mixed.startSample(0);
     drawn.startSample(0);
     for (int request = 0; request < 300; ++request) {  // past the requests remembered too
-        mixed.skip2D();
+        mixed.skip();
         drawn.get2D();
         EXPECT_EQ(mixed.get1D(), drawn.get1D());
     }
