@@ -150,30 +150,21 @@ TEST(SamplerTest, AValuePassedOverLeavesTheRequestsAfterItTheirNumbers) {
     }
 }
 
-TEST(SamplerTest, AValuePassedOverByOneSampleIsDrawnByTheNext) {
-    Sampler mixed(5, 2, 3);
-    mixed.startSample(0);
-    for (int request = 0; request < 300; ++request)
-        mixed.skip();
-    for (int i = 1; i < 4; ++i) {
-        mixed.startSample(i);
-        Sampler fresh(5, 2, 3);
-        fresh.startSample(i);
-        for (int request = 0; request < 300; ++request) {
-            EXPECT_EQ(mixed.get1D(), fresh.get1D());
-        }
-    }
-}
-
-TEST(SamplerTest, APointPassedOverByOneSampleIsDrawnByTheNext) {
+TEST(SamplerTest, ARequestPassedOverByOneSampleIsDrawnByTheNext) {
     // (Requests are remembered by the first sample that makes them; a skipped one has no seeds.)
+    // The first sample passes over every point and every other value; the next ones draw them.
     Sampler mixed(7, 12, 34), drawn(7, 12, 34);
     mixed.startSample(0);
     drawn.startSample(0);
     for (int request = 0; request < 300; ++request) {  // past the requests remembered too
         mixed.skip();
         drawn.get2D();
-        EXPECT_EQ(mixed.get1D(), drawn.get1D());
+        if (request % 2 == 0) {
+            EXPECT_EQ(mixed.get1D(), drawn.get1D());
+        } else {
+            mixed.skip();
+            drawn.get1D();
+        }
     }
     for (int i = 1; i < 4; ++i) {
         mixed.startSample(i);
