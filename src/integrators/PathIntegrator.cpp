@@ -22,11 +22,9 @@ std::unique_ptr<Integrator> PathIntegrator::create(const Scene& scene, const Int
 }
 
 Color PathIntegrator::sampleOneLight(const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
-                                     float uChoice, const Vec2& uLight,
+                                     const LightSampler::Choice& choice, const Vec2& uLight,
                                      std::uint64_t& rayCount) const {
-    const auto choice = lights_.choose(uChoice);
-    if (!choice) return Color(0);
-    const Light& light = *choice.value().light;
+    const Light& light = *choice.light;
     const LightSample ls = light.sample(hit.p, uLight);
     const bool delta = light.isDelta();
     if (ls.irradiance.isBlack() || (!delta && !(ls.pdf > 0))) return Color(0);
@@ -35,9 +33,9 @@ Color PathIntegrator::sampleOneLight(const Hit& hit, const Bsdf& bsdf, const Vec
     // Shadow rays stop at the first surface: light through glass arrives by refracted paths.
     if (!ShadowRays::unoccluded(scene_, hit, ls, rayCount)) return Color(0);
     const float weight =
-        delta ? 1 : powerHeuristic(choice->probability * ls.pdf, bsdf.pdf(wo, ls.wi));
+        delta ? 1 : powerHeuristic(choice.probability * ls.pdf, bsdf.pdf(wo, ls.wi));
     const float cosine = std::abs(dot(ls.wi, bsdf.shadingNormal()));
-    return f * ls.irradiance * (cosine * weight / choice->probability);
+    return f * ls.irradiance * (cosine * weight / choice.probability);
 }
 
 Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sampler,
@@ -101,11 +99,13 @@ Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sa
             return Vec2();
         };
         const float uLightChoice = value(samplesLight && lights_.choiceReadsU());
-        const Vec2 uLight = point(samplesLight);
+        const std::optional<LightSampler::Choice> light =
+            samplesLight ? lights_.choose(uLightChoice) : std::nullopt;
+        // A delta light's sample does not read its point.
+        const Vec2 uLight = point(light && !light->light->isDelta());
         const float uLobe = value(bsdf.readsLobeChoice());
         const Vec2 uBsdf = sampler.get2D();
-        if (samplesLight)
-            L += throughput * sampleOneLight(hit, bsdf, wo, uLightChoice, uLight, rayCount);
+        if (light) L += throughput * sampleOneLight(hit, bsdf, wo, *light, uLight, rayCount);
 
         const auto s = bsdf.sample(wo, uLobe, uBsdf);
         if (!s || s->f.isBlack() || !(s->pdf > 0)) break;

@@ -2,8 +2,8 @@
 
 #include <memory>
 
-#include "scene/LightSampler.h"
 #include "render/Integrator.h"
+#include "scene/LightSampler.h"
 
 namespace lancer {
 
@@ -29,9 +29,10 @@ public:
     static constexpr int kRouletteDepth = 3;
 
 private:
-    // Light from one light sampled at the vertex, weighted against BSDF sampling.
-    Color sampleOneLight(const Hit& hit, const Bsdf& bsdf, const Vec3& wo, float uChoice,
-                         const Vec2& uLight, std::uint64_t& rayCount) const;
+    // Light from the chosen light sampled at the vertex, weighted against BSDF sampling.
+    Color sampleOneLight(const Hit& hit, const Bsdf& bsdf, const Vec3& wo,
+                         const LightSampler::Choice& choice, const Vec2& uLight,
+                         std::uint64_t& rayCount) const;
 
     const Scene& scene_;
     int maxDepth_;
