@@ -379,7 +379,7 @@ Image ImageReader::read(const std::filesystem::path& path, Content content) {
     std::rewind(file.get());
 
     startCapturingFreeImageMessages();
-    if (format == FIF_EXR) shareExrWorkAmongThreads();
+    shareExrWorkAmongThreads(format);
     const auto checkSize = [&](FIBITMAP* image) {
         const std::string beyond =
             sizeBeyondLimits(FreeImage_GetWidth(image), FreeImage_GetHeight(image));

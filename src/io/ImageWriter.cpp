@@ -120,7 +120,7 @@ void ImageWriter::write(const Image& film, const std::filesystem::path& path) {
     if (!format) throw std::runtime_error(path.string() + ": unsupported image format");
 
     startCapturingFreeImageMessages();
-    if (format->fif == FIF_EXR) shareExrWorkAmongThreads();
+    shareExrWorkAmongThreads(format->fif);
     const FreeImageBitmap bitmap =
         format->linear ? toLinearBitmap(film, format->fif) : toSrgbBitmap(film, format->fif);
     if (!bitmap) throw std::runtime_error(path.string() + ": out of memory for the image");
