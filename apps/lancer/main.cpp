@@ -56,7 +56,7 @@ constexpr int kExitBadInput = 2;
 struct Options {
     std::string scene;
     std::string output;
-    std::optional<int> width, height, spp, maxDepth;
+    std::optional<int> width, height, spp, maxDepth, lightEdgeFactor;
     std::optional<float> adcBailout;
     std::optional<std::string> integrator;
     int threads = 0;
@@ -364,6 +364,7 @@ std::uint64_t renderFingerprint(const Scene& scene, const RenderOptions& renderO
         .addNumber(static_cast<std::uint64_t>(settings.samplesPerPixel))
         .addNumber(static_cast<std::uint64_t>(settings.maxDepth))
         .addNumber(std::bit_cast<std::uint32_t>(settings.adcBailout))
+        .addNumber(static_cast<std::uint64_t>(settings.lightEdgeFactor))
         .addText(settings.integrator)
         .addNumber(renderOptions.seed)
         .addNumber(static_cast<std::uint64_t>(frame));
@@ -385,6 +386,7 @@ int renderImage(const Options& options, Cluster& cluster, Scene scene, const fs:
     if (options.spp) settings.samplesPerPixel = *options.spp;
     if (options.maxDepth) settings.maxDepth = *options.maxDepth;
     if (options.adcBailout) settings.adcBailout = *options.adcBailout;
+    if (options.lightEdgeFactor) settings.lightEdgeFactor = *options.lightEdgeFactor;
     if (options.integrator) settings.integrator = *options.integrator;
     // The image's buffers are allocated before the render starts, and all at once: refuse an
     // image that cannot fit before the first of them (or the radiosity solve) takes its time.
@@ -708,6 +710,10 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, RenderSettings::kMaxSamplesPerPixel));
     app.add_option("--max-depth", options.maxDepth, "Recursion depth (overrides the scene)")
         ->check(CLI::Range(0, RenderSettings::kMaxDepthLimit));
+    app.add_option("--light-edge-factor", options.lightEdgeFactor,
+                   "Pixels on the edge of a light the camera sees take this many times the "
+                   "samples, 1 to turn it off (overrides the scene; default 16)")
+        ->check(CLI::Range(1, RenderSettings::kMaxSamplesPerPixel));
     app.add_option("--adc-bailout", options.adcBailout,
                    "Whitted and radiosity: leave the reflected and refracted rays that would carry "
                    "less than this fraction of their light to the pixel, 0 to 1 (overrides the "

@@ -642,7 +642,7 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     requireObject(node, "\"render\"");
     checkKeys(node, "\"render\"",
               {"width", "height", "spp", "max_depth", "adc_bailout", "integrator", "filter",
-               "adaptive", "exposure", "tonemap", "clamp"});
+               "adaptive", "light_edge_factor", "exposure", "tonemap", "clamp"});
     RenderSettings& settings = scene_.settings();
     if (node.has("width"))
         settings.width = readInt(node["width"], 1, RenderSettings::kMaxImageSide);
@@ -664,6 +664,9 @@ void SceneLoader::Reader::loadRender(const Node& node) {
     }
     if (node.has("filter")) loadFilter(node["filter"]);
     if (node.has("adaptive")) loadAdaptive(node, node["adaptive"]);
+    if (node.has("light_edge_factor"))
+        settings.lightEdgeFactor =
+            readInt(node["light_edge_factor"], 1, RenderSettings::kMaxSamplesPerPixel);
     if (node.has("exposure")) {
         const Node exposure = node["exposure"];
         settings.exposure = readNumber(exposure);

@@ -143,14 +143,17 @@ PixelEstimator::PixelEstimator(const Scene& scene, const Integrator& integrator)
       integrator_(integrator),
       firstHitProbe_(scene),
       filterSampler_(Filter::create(scene.settings().filter)),
-      maxSamples_(scene.settings().samplesPerPixel) {
+      maxSamples_(scene.settings().samplesPerPixel),
+      lightEdgeSamples_(static_cast<int>(std::min<long long>(
+          static_cast<long long>(maxSamples_) * std::max(scene.settings().lightEdgeFactor, 1),
+          RenderSettings::kMaxSamplesPerPixel))) {
     const std::optional<AdaptiveSettings>& adaptive = scene.settings().adaptive;
-    batchSize_ = adaptive ? std::min(adaptive->minSamples, maxSamples_) : maxSamples_;
+    batchSize_ = adaptive ? std::min(adaptive->minSamples, maxSamples_) : 0;
     threshold_ = adaptive ? adaptive->threshold : 0.0;
 }
 
 Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters& counters,
-                               AovSample* aovs) const {
+                               bool onLightEdge, AovSample* aovs) const {
     const RenderSettings& settings = scene_.settings();
     const Camera& camera = scene_.camera();
     // Each of n samples covers about 1/sqrt(n) of the pixel's width (n: the most samples the pixel
@@ -161,14 +164,16 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
     Sampler sampler(seed, x, y);
     WeightedMean mean;
     AovMean aovMean;
+    const int maxSamples = onLightEdge ? lightEdgeSamples_ : maxSamples_;
+    const int batchSize = batchSize_ > 0 ? batchSize_ : maxSamples;
     int n = 0;
-    for (int target = batchSize_;; target = std::min(target + batchSize_, maxSamples_)) {
+    for (int target = batchSize;; target = std::min(target + batchSize, maxSamples)) {
         for (; n < target; ++n) {
             sampler.startSample(n);
             // A single sample goes through the pixel centre, as a classic ray tracer's: its
             // filter point keeps its place among the requests, undrawn.
             FilterSample film{{0, 0}, 1};
-            if (maxSamples_ == 1)
+            if (maxSamples == 1)
                 sampler.skip();
             else
                 film = filterSampler_.sample(sampler.get2D());
@@ -200,7 +205,7 @@ Color PixelEstimator::estimate(int x, int y, std::uint64_t seed, RenderCounters&
             mean.add(L, film.weight);
             if (aovs) aovMean.add(firstHitProbe_.probe(*ray, counters.rays), film.weight);
         }
-        if (n >= maxSamples_) break;
+        if (n >= maxSamples) break;
         // The error is relative to the pixel's luminance, so that the threshold means the same
         // in bright and dim parts of the image; but below kDarkLuminanceFloor (a quarter of the
         // display's range once sRGB-encoded), relative to the floor. Without it a nearly black

@@ -22,10 +22,12 @@ public:
     // Reads the scene's render settings (filter, spp, adaptive) once; the camera at each call.
     PixelEstimator(const Scene& scene, const Integrator& integrator);
 
-    // With `aovs`, also the auxiliary outputs there: what FirstHitProbe finds along the same
-    // camera rays, averaged with the same filter weights (the image's value is unchanged).
+    // onLightEdge: the pixel is on a light's edge (LightEdgeProbe) and takes the scene's
+    // lightEdgeFactor times the samples. With `aovs`, also the auxiliary outputs there: what
+    // FirstHitProbe finds along the same camera rays, averaged with the same filter weights (the
+    // image's value is unchanged).
     Color estimate(int x, int y, std::uint64_t seed, RenderCounters& counters,
-                   AovSample* aovs = nullptr) const;
+                   bool onLightEdge = false, AovSample* aovs = nullptr) const;
 
     // Below this luminance the adaptive threshold applies to the error relative to this floor
     // rather than to the pixel's own (tiny) value; see estimate().
@@ -37,8 +39,9 @@ private:
     FirstHitProbe firstHitProbe_;
     FilterSampler filterSampler_;
     int maxSamples_;
-    int batchSize_;     // the first batch is min_spp; without adaptive sampling, all at once
-    double threshold_;  // 0 without adaptive sampling
+    int lightEdgeSamples_;  // what a pixel on a light's edge may take instead
+    int batchSize_;         // with adaptive sampling, min_spp; without, 0: all at once
+    double threshold_;      // 0 without adaptive sampling
 };
 
 }  // namespace lancer

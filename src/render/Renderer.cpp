@@ -23,7 +23,10 @@
 namespace lancer {
 
 Renderer::Renderer(const Scene& scene, const Integrator& integrator)
-    : scene_(scene), integrator_(integrator), pixelEstimator_(scene, integrator) {}
+    : scene_(scene),
+      integrator_(integrator),
+      pixelEstimator_(scene, integrator),
+      lightEdgeProbe_(scene) {}
 
 Color Renderer::previewSample(const PixelWindow& block, std::uint64_t seed,
                               std::uint64_t& rayCount) const {
@@ -184,11 +187,14 @@ RenderResult Renderer::render(const RenderOptions& options) const {
             const auto index = [&](int x, int y) {
                 return static_cast<std::size_t>((y - tile.y0) * tile.width() + (x - tile.x0));
             };
+            if (cancelled()) return false;
+            const std::vector<bool> onLightEdge = lightEdgeProbe_.edges(tile, counters.rays);
             for (int y = tile.y0; y < tile.y1; ++y) {
-                if (cancelled()) return false;
+                if (y > tile.y0 && cancelled()) return false;
                 for (int x = tile.x0; x < tile.x1; ++x)
                     tilePixels[index(x, y)] = pixelEstimator_.estimate(
-                        x, y, options.seed, counters, withAovs ? &tileAovs[index(x, y)] : nullptr);
+                        x, y, options.seed, counters, onLightEdge[index(x, y)],
+                        withAovs ? &tileAovs[index(x, y)] : nullptr);
             }
             for (int y = tile.y0; y < tile.y1; ++y)
                 for (int x = tile.x0; x < tile.x1; ++x) {

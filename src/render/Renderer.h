@@ -2,6 +2,7 @@
 
 #include <vector>
 
+#include "render/LightEdgeProbe.h"
 #include "render/PixelEstimator.h"
 #include "render/PixelWindow.h"
 #include "render/RenderOptions.h"
@@ -33,6 +34,7 @@ private:
     const Scene& scene_;
     const Integrator& integrator_;
     PixelEstimator pixelEstimator_;  // the image's pixels
+    LightEdgeProbe lightEdgeProbe_;  // which of them take more samples
 };
 
 }  // namespace lancer

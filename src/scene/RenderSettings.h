@@ -37,6 +37,9 @@ struct RenderSettings {
     std::string integrator = "whitted";
     FilterSettings filter;                     // the reconstruction filter
     std::optional<AdaptiveSettings> adaptive;  // none: every pixel takes samplesPerPixel
+    // A pixel on the edge of a light the camera sees (LightEdgeProbe) takes this many times the
+    // samples (with adaptive sampling, this many times max_spp at most); 1: as any other pixel.
+    int lightEdgeFactor = 16;
     // The largest radiance one camera sample may carry (a brighter sample is scaled down to this
     // largest component): fireflies trade for bias. None: samples are kept as they are.
     std::optional<float> sampleClamp;

@@ -34,13 +34,15 @@ const Material* Scene::addMaterial(std::unique_ptr<Material> material) {
 }
 
 void Scene::addShape(std::unique_ptr<Shape> shape) {
-    for (std::uint32_t i = 0; i < shape->primitiveCount() &&
-                              !(hasTransmissiveMaterial_ && hasCutOuts_ && hasGlossyMaterial_);
+    for (std::uint32_t i = 0;
+         i < shape->primitiveCount() &&
+         !(hasTransmissiveMaterial_ && hasCutOuts_ && hasGlossyMaterial_ && hasEmittingSurface_);
          ++i) {
         if (const Material* material = shape->primitiveMaterial(i)) {
             hasTransmissiveMaterial_ = hasTransmissiveMaterial_ || material->isTransmissive();
             hasCutOuts_ = hasCutOuts_ || material->hasCutOuts();
             hasGlossyMaterial_ = hasGlossyMaterial_ || material->reflectsGlossily();
+            hasEmittingSurface_ = hasEmittingSurface_ || !material->emission().isBlack();
         }
     }
     (shape->isBounded() ? boundedShapes_ : unboundedShapes_).push_back(std::move(shape));

@@ -109,6 +109,8 @@ public:
     bool hasCutOuts() const { return hasCutOuts_; }
     // Whether some surface reflects glossily (Material::reflectsGlossily).
     bool hasGlossyMaterial() const { return hasGlossyMaterial_; }
+    // Whether some surface emits light (an area light, an emitting material).
+    bool hasEmittingSurface() const { return hasEmittingSurface_; }
 
 private:
     // cross and occluded through the BVH, the lone triangles tested by the scene (kLoneTriangles)
@@ -138,6 +140,7 @@ private:
     std::vector<std::uint32_t> loneTrianglePack_;
     std::vector<TrianglePack> loneTriangles_;
     bool hasTransmissiveMaterial_ = false;
+    bool hasEmittingSurface_ = false;
     bool hasCutOuts_ = false;
     bool hasGlossyMaterial_ = false;
     Statistics statistics_;

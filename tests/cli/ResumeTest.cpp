@@ -92,6 +92,7 @@ TEST(CliResumeRefuses, AnotherRenderOrADamagedFile) {
     for (const auto& option : std::vector<std::vector<std::string>>{{"--seed", "7"},
                                                                     {"--max-depth", "2"},
                                                                     {"--adc-bailout", "0.5"},
+                                                                    {"--light-edge-factor", "4"},
                                                                     {"--aov", "depth"},
                                                                     {"--crop", "0,0,64,64"}}) {
         const RunResult run = runLancer(with(kRender, with(option, {"--resume"})), folder.path());
