@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -91,6 +92,29 @@ TEST(PixelEstimatorTest, AStrictThresholdTakesMaxSppOnTheOutlineOnly) {
         most = std::max(most, pixels.samplesAt(x, kSize / 2));
     EXPECT_EQ(most, 100u) << "a batch is cut short at max_spp, not rounded up";
     EXPECT_EQ(pixels.samplesAt(8, 8), 4u);
+}
+
+TEST(PixelEstimatorTest, APixelOnALightsEdgeTakesTheFactorTimesItsBudget) {
+    const auto samples = [](const RenderablePixels& pixels, int x, int y, bool onLightEdge) {
+        RenderCounters counters;
+        pixels.estimator->estimate(x, y, 0, counters, onLightEdge);
+        return counters.samples;
+    };
+    const RenderablePixels uniform(sphereScene(R"(, "spp": 4, "light_edge_factor": 3)"));
+    EXPECT_EQ(samples(uniform, 8, 8, true), 12u);
+    EXPECT_EQ(samples(uniform, 8, 8, false), 4u);
+    // With adaptive sampling, up to the factor times max_spp where the pixel stays noisy; a flat
+    // pixel still stops at min_spp.
+    const RenderablePixels adaptive(sphereScene(
+        R"(, "adaptive": { "min_spp": 4, "max_spp": 100, "threshold": 0.000001 },
+             "light_edge_factor": 3)"));
+    std::uint64_t most = 0;
+    for (int x = 0; x < kSize; ++x) {
+        most = std::max(most, samples(adaptive, x, kSize / 2, true));
+        EXPECT_LE(samples(adaptive, x, kSize / 2, false), 100u);
+    }
+    EXPECT_EQ(most, 300u);
+    EXPECT_EQ(samples(adaptive, 8, 8, true), 4u);
 }
 
 TEST(PixelEstimatorTest, AdaptiveConvergesToTheUniformValue) {
