@@ -25,7 +25,7 @@ Color PathIntegrator::sampleOneLight(const Hit& hit, const Bsdf& bsdf, const Vec
                                      const LightSampler::Choice& choice, const Vec2& uLight,
                                      std::uint64_t& rayCount) const {
     const Light& light = *choice.light;
-    const LightSample ls = light.sample(hit.p, uLight);
+    const LightSample ls = light.sampleBesideBsdf(hit.p, uLight);
     const bool delta = light.isDelta();
     if (ls.irradiance.isBlack() || (!delta && !(ls.pdf > 0))) return Color(0);
     const Color f = bsdf.f(wo, ls.wi);
@@ -57,7 +57,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sa
                 L += throughput * scene_.background();
                 break;
             }
-            const EnvironmentLight::Arrival seen = environment->arrival(ray.direction);
+            const EnvironmentLight::Arrival seen = environment->arrivalBesideBsdf(ray.direction);
             float weight = 1;
             // A BSDF ray escaping to an environment that light sampling could also have found.
             if (bounces > 0 && !afterDelta)
@@ -75,7 +75,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sa
             if (bounces > 0 && !afterDelta) {
                 if (const Light* light = lights_.lightAt(hit)) {
                     const float lightPdf =
-                        lights_.probability(light) * light->pdf(lastVertex, -wo, hit);
+                        lights_.probability(light) * light->pdfBesideBsdf(lastVertex, -wo, hit);
                     weight = powerHeuristic(lastBsdfPdf, lightPdf);
                 }
             }

@@ -93,34 +93,78 @@ EnvironmentLight::EnvironmentLight(Image map, float intensity, float rotateDegre
       cosRotate_(std::cos(radians(rotateDegrees))),
       sinRotate_(std::sin(radians(rotateDegrees))),
       texels_(borderedTexels(map, intensity)),
-      distribution_(cellWeights(), width_, height_) {
+      alone_(wholeMap(cellMeans())),
+      besideBsdf_(aboveAverage(cellMeans())) {
     // Each texel's cell subtends (2 pi / w) (pi / h) sin(theta) steradians.
     for (int y = 0; y < height_; ++y) {
         const float solidAngle = 2 * kPi * kPi * rowSinTheta(y, height_) /
                                  (static_cast<float>(width_) * static_cast<float>(height_));
         for (int x = 0; x < width_; ++x)
             radianceIntegral_ += texel(x, y) * solidAngle;
-        rowDensity_.push_back(rowSinTheta(y, height_) / distribution_.integral());
     }
 }
 
-// Each cell's weight: the texel's luminance averaged over its cell as the bilinear lookup spreads
-// it (weights 1/8, 3/4, 1/8 across and down: the exact cell average of the linear interpolation
-// between texel centres, so that every cell the lookup sees light in has a weight above zero),
-// times sin(theta) at the row's centre, the area of the cell's image on the sphere.
-std::vector<float> EnvironmentLight::cellWeights() const {
+// Each cell's luminance averaged over it as the bilinear lookup spreads it (weights 1/8, 3/4,
+// 1/8 across and down: the exact cell average of the linear interpolation between texel
+// centres, so that every cell the lookup sees light in has a mean above zero).
+std::vector<float> EnvironmentLight::cellMeans() const {
     constexpr float kSpread[3] = {0.125f, 0.75f, 0.125f};
-    std::vector<float> weights;
-    weights.reserve(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+    std::vector<float> means;
+    means.reserve(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
     for (int y = 0; y < height_; ++y)
         for (int x = 0; x < width_; ++x) {
-            float average = 0;
+            float mean = 0;
             for (int dy = -1; dy <= 1; ++dy)
                 for (int dx = -1; dx <= 1; ++dx)
-                    average += kSpread[dy + 1] * kSpread[dx + 1] * luminance(x + dx, y + dy);
-            weights.push_back(std::max(average, 0.0f) * rowSinTheta(y, height_));
+                    mean += kSpread[dy + 1] * kSpread[dx + 1] * luminance(x + dx, y + dy);
+            means.push_back(std::max(mean, 0.0f));
         }
-    return weights;
+    return means;
+}
+
+// A cell's weight is its mean luminance times sin(theta) at the row's centre, the area of the
+// cell's image on the sphere. Within the cell the point follows the bilinear luminance Y, so the
+// density is the cell's probability w / (N mean w) per cell area 1 / N, times Y over the cell's
+// mean = w / sin(theta): Y sin(theta) / mean w, whatever the cell.
+EnvironmentLight::Strategy EnvironmentLight::wholeMap(const std::vector<float>& means) const {
+    std::vector<float> weights(means.size());
+    for (std::size_t i = 0; i < means.size(); ++i)
+        weights[i] = means[i] * rowSinTheta(static_cast<int>(i) / width_, height_);
+    return strategy(weights, {});
+}
+
+// A cell's weight is its mean's excess over the map's mean luminance (over the sphere), times
+// sin(theta); then the density is the whole map's with w = (mean - average) sin(theta), times the
+// cell's share (mean - average) / mean of its mean.
+EnvironmentLight::Strategy EnvironmentLight::aboveAverage(const std::vector<float>& means) const {
+    double weighted = 0, area = 0;
+    for (std::size_t i = 0; i < means.size(); ++i) {
+        const double sinTheta = rowSinTheta(static_cast<int>(i) / width_, height_);
+        weighted += means[i] * sinTheta;
+        area += sinTheta;
+    }
+    const auto average = static_cast<float>(weighted / area);
+    std::vector<float> weights(means.size()), share(means.size());
+    bool anyAbove = false;
+    for (std::size_t i = 0; i < means.size(); ++i) {
+        const float excess = means[i] - average;
+        if (!(excess > 0)) continue;
+        anyAbove = true;
+        weights[i] = excess * rowSinTheta(static_cast<int>(i) / width_, height_);
+        share[i] = excess / means[i];
+    }
+    // A uniform map has no cell above its average: BSDF sampling is then as good, and the
+    // whole map is sampled as it is alone.
+    if (!anyAbove) return wholeMap(means);
+    return strategy(weights, std::move(share));
+}
+
+EnvironmentLight::Strategy EnvironmentLight::strategy(const std::vector<float>& weights,
+                                                      std::vector<float> cellShare) const {
+    Strategy s{Distribution2D(weights, width_, height_), {}, std::move(cellShare)};
+    for (int y = 0; y < height_; ++y)
+        s.rowDensity.push_back(rowSinTheta(y, height_) / s.cells.integral());
+    return s;
 }
 
 Vec2 EnvironmentLight::mapPoint(const Vec3& d) {
@@ -164,11 +208,21 @@ Color EnvironmentLight::radiance(const Vec3& d) const {
 }
 
 EnvironmentLight::Arrival EnvironmentLight::arrival(const Vec3& d) const {
+    return arrivalBy(alone_, d);
+}
+
+EnvironmentLight::Arrival EnvironmentLight::arrivalBesideBsdf(const Vec3& d) const {
+    return arrivalBy(besideBsdf_, d);
+}
+
+EnvironmentLight::Arrival EnvironmentLight::arrivalBy(const Strategy& strategy,
+                                                      const Vec3& d) const {
     const Vec3 inMap = toMap(normalize(d));
     const Vec2 uv = mapPoint(inMap);
     Arrival seen{lookUp(uv), 0.0f};
     const float sinTheta = std::sqrt(std::max(0.0f, 1 - inMap.y * inMap.y));
-    if (sinTheta > 0) seen.pdf = solidAngleDensity(mapDensity(uv, seen.radiance), sinTheta);
+    if (sinTheta > 0)
+        seen.pdf = solidAngleDensity(mapDensity(strategy, uv, seen.radiance), sinTheta);
     return seen;
 }
 
@@ -210,14 +264,17 @@ Vec2 EnvironmentLight::sampleInCell(int x, int y, Vec2 u) const {
                      kOneMinusEpsilon)};
 }
 
-// Within a cell, sample() picks a point in proportion to the luminance Y, so the density is the
-// cell's probability w / (N mean w) per cell area 1 / N, times Y over the cell's mean Y = w /
-// sin(theta): Y sin(theta) / mean w, whatever the cell.
-float EnvironmentLight::mapDensity(const Vec2& uv, const Color& radiance) const {
+float EnvironmentLight::mapDensity(const Strategy& strategy, const Vec2& uv,
+                                   const Color& radiance) const {
     // A black map is sampled uniformly.
-    if (!(distribution_.integral() > 0)) return 1;
+    if (!(strategy.cells.integral() > 0)) return 1;
     const int y = std::min(static_cast<int>(uv.y * static_cast<float>(height_)), height_ - 1);
-    return rowDensity_[static_cast<std::size_t>(y)] * radiance.luminance();
+    const float density = strategy.rowDensity[static_cast<std::size_t>(y)] * radiance.luminance();
+    if (strategy.cellShare.empty()) return density;
+    const int x = std::min(static_cast<int>(uv.x * static_cast<float>(width_)), width_ - 1);
+    return density *
+           strategy.cellShare[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+                              static_cast<std::size_t>(x)];
 }
 
 float EnvironmentLight::solidAngleDensity(float mapDensity, float sinTheta) {
@@ -226,13 +283,21 @@ float EnvironmentLight::solidAngleDensity(float mapDensity, float sinTheta) {
 }
 
 LightSample EnvironmentLight::sample(const Vec3&, const Vec2& u) const {
+    return sampleBy(alone_, u);
+}
+
+LightSample EnvironmentLight::sampleBesideBsdf(const Vec3&, const Vec2& u) const {
+    return sampleBy(besideBsdf_, u);
+}
+
+LightSample EnvironmentLight::sampleBy(const Strategy& strategy, const Vec2& u) const {
     LightSample s;
     s.atInfinity = true;
-    const Distribution2D::CellSample cell = distribution_.sampleCell(u);
+    const Distribution2D::CellSample cell = strategy.cells.sampleCell(u);
     if (!(cell.probability > 0)) return s;
     const Vec2 uv = sampleInCell(cell.x, cell.y, cell.offset);
     const Color radiance = lookUp(uv);
-    const float mapPdf = mapDensity(uv, radiance);
+    const float mapPdf = mapDensity(strategy, uv, radiance);
     const float sinTheta = std::sin(uv.y * kPi);
     if (!(mapPdf > 0) || !(sinTheta > 0)) return s;
     s.wi = toWorld(mapDirection(uv));
@@ -243,6 +308,10 @@ LightSample EnvironmentLight::sample(const Vec3&, const Vec2& u) const {
 
 float EnvironmentLight::pdf(const Vec3&, const Vec3& wi, const Hit&) const {
     return arrival(wi).pdf;
+}
+
+float EnvironmentLight::pdfBesideBsdf(const Vec3&, const Vec3& wi, const Hit&) const {
+    return arrivalBesideBsdf(wi).pdf;
 }
 
 Color EnvironmentLight::power(float sceneRadius) const {

@@ -20,7 +20,9 @@ namespace lancer {
 // The texels are kept with a border (a column wrapped around on each side, the pole rows
 // repeated), so that a lookup reads its four texels without wrapping or clamping, and each with
 // its luminance, which a sample reads nine of around its cell before it looks the point up in
-// the same cache lines.
+// the same cache lines. Beside BSDF sampling (sampleBesideBsdf), the cells are picked by how far
+// their average luminance exceeds the whole map's instead (Karlik et al. 2019): the dim sky,
+// which BSDF sampling finds well, is left to it, and the light's samples go to the sun.
 class EnvironmentLight final : public Light {
 public:
     // The scene file's "environment": its keys besides "file" (read by the loader, which gives
@@ -41,10 +43,14 @@ public:
         float pdf;
     };
     Arrival arrival(const Vec3& d) const;
+    // The same with the density of sampleBesideBsdf().
+    Arrival arrivalBesideBsdf(const Vec3& d) const;
 
     LightSample sample(const Vec3& p, const Vec2& u) const override;
     bool isDelta() const override { return false; }
     float pdf(const Vec3& p, const Vec3& wi, const Hit& onLight) const override;
+    LightSample sampleBesideBsdf(const Vec3& p, const Vec2& u) const override;
+    float pdfBesideBsdf(const Vec3& p, const Vec3& wi, const Hit& onLight) const override;
     // The flux through a disc as wide as the scene from every direction: pi R^2 times the
     // integral of the radiance over the sphere.
     Color power(float sceneRadius) const override;
@@ -69,15 +75,31 @@ private:
         return static_cast<std::size_t>(y + 1) * static_cast<std::size_t>(width_ + 2) +
                static_cast<std::size_t>(x + 1);
     }
-    // The cells' weights for the Distribution2D.
-    std::vector<float> cellWeights() const;
+    // How cells are picked, then a point in the cell in proportion to the bilinear luminance:
+    // the density over the map's (u, v) there is rowDensity[y] * cellShare[cell] * luminance
+    // (cellShare empty: 1 for every cell).
+    struct Strategy {
+        Distribution2D cells;
+        std::vector<float> rowDensity;
+        std::vector<float> cellShare;
+    };
+    // Each cell's luminance averaged over it as the bilinear lookup spreads it.
+    std::vector<float> cellMeans() const;
+    // By the cells' mean luminance times sin(theta); by its excess over the map's mean (or, for
+    // a map without any, as the former).
+    Strategy wholeMap(const std::vector<float>& means) const;
+    Strategy aboveAverage(const std::vector<float>& means) const;
+    // The distribution of `weights` (per cell, row by row) with its row densities.
+    Strategy strategy(const std::vector<float>& weights, std::vector<float> cellShare) const;
+    LightSample sampleBy(const Strategy& strategy, const Vec2& u) const;
+    Arrival arrivalBy(const Strategy& strategy, const Vec3& d) const;
     // The bilinear lookup at (u, v) in [0, 1)^2.
     Color lookUp(const Vec2& uv) const;
     // A point of texel (x, y)'s cell in proportion to the bilinear luminance there, from u.
     Vec2 sampleInCell(int x, int y, Vec2 u) const;
-    // The density over the map's (u, v) with which sample() picks a point where the lookup
+    // The density over the map's (u, v) with which `strategy` picks a point where the lookup
     // gives `radiance`.
-    float mapDensity(const Vec2& uv, const Color& radiance) const;
+    float mapDensity(const Strategy& strategy, const Vec2& uv, const Color& radiance) const;
     // The solid-angle density of the direction of map point uv, from its density over (u, v).
     static float solidAngleDensity(float mapDensity, float sinTheta);
     Vec3 toMap(const Vec3& world) const;
@@ -86,11 +108,9 @@ private:
     int width_, height_;
     float cosRotate_, sinRotate_;
     std::vector<Texel> texels_;  // the map scaled by the intensity, with its border
-    // Per row: the density over (u, v) per unit of bilinear luminance, sin(theta) at the row's
-    // centre over the mean of the cells' weights (1 for all rows if the map is black).
-    std::vector<float> rowDensity_;
-    Distribution2D distribution_;  // of the cells, by average luminance times sin(theta)
-    Color radianceIntegral_;       // the integral of the radiance over the sphere of directions
+    Strategy alone_;             // sample(): by the cells' mean luminance times sin(theta)
+    Strategy besideBsdf_;        // sampleBesideBsdf(): by its excess over the map's mean
+    Color radianceIntegral_;     // the integral of the radiance over the sphere of directions
 };
 
 }  // namespace lancer

@@ -24,6 +24,18 @@ public:
     // light's surface at `onLight` (for multiple importance sampling). 0 for delta lights.
     virtual float pdf(const Vec3& p, const Vec3& wi, const Hit& onLight) const;
 
+    // The same for samples combined with BSDF sampling by multiple importance sampling, which
+    // finds by itself the directions where the light is dim against its average: a light may
+    // then leave them out and sample where it outshines that average (pbrt-v4's "incomplete
+    // PDF", Karlik et al. 2019's MIS compensation). Its density may be 0 where the BSDF's is
+    // not; any other use needs sample() and pdf(). By default, those.
+    virtual LightSample sampleBesideBsdf(const Vec3& p, const Vec2& u) const {
+        return sample(p, u);
+    }
+    virtual float pdfBesideBsdf(const Vec3& p, const Vec3& wi, const Hit& onLight) const {
+        return pdf(p, wi, onLight);
+    }
+
     // The total power (flux) the light emits, for choosing lights in proportion to it. Lights at
     // infinity need the radius of a sphere bounding the scene.
     virtual Color power(float sceneRadius) const = 0;
