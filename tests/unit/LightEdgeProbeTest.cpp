@@ -37,20 +37,34 @@ Scene loadScene(const std::string& background, const std::string& lampMaterial, 
                                    "scene.json", warnings);
 }
 
+// What the probe finds over the whole image.
+struct WholeImage {
+    bool active;
+    std::vector<bool> edges;
+    std::uint64_t rays = 0;
+    long edgePixels;
+};
+
+WholeImage probeWholeImage(const Scene& scene) {
+    const LightEdgeProbe probe(scene);
+    WholeImage found{probe.active(), {}, 0, 0};
+    found.edges = probe.edges({0, 0, kWidth, kHeight}, found.rays);
+    found.edgePixels = std::count(found.edges.begin(), found.edges.end(), true);
+    EXPECT_EQ(found.edges.size(), std::size_t{kWidth * kHeight});
+    return found;
+}
+
 TEST(LightEdgeProbe, FindsTheLampsOutlineAndTheSameEdgesWhateverTheTiles) {
     const Scene scene = loadScene("0", R"({"diffuse": 0, "emission": 5})");
-    const LightEdgeProbe probe(scene);
-    ASSERT_TRUE(probe.active());
-    std::uint64_t rays = 0;
-    const std::vector<bool> whole = probe.edges({0, 0, kWidth, kHeight}, rays);
-    EXPECT_EQ(rays, std::uint64_t{(kWidth + 1) * (kHeight + 1)});  // each corner once
-    int edgePixels = 0;
-    for (const bool onEdge : whole)
-        edgePixels += onEdge;
+    const auto [active, whole, wholeRays, edgePixels] = probeWholeImage(scene);
+    ASSERT_TRUE(active);
+    EXPECT_EQ(wholeRays, std::uint64_t{(kWidth + 1) * (kHeight + 1)});  // each corner once
     // The lamp's outline, a ring of pixels around a disc some 8 pixels across.
     EXPECT_GT(edgePixels, 16);
     EXPECT_LT(edgePixels, 60);
     // Cut into windows of odd sizes, the same pixels.
+    const LightEdgeProbe probe(scene);
+    std::uint64_t rays = 0;
     for (const int size : {1, 3, 16}) {
         for (int y0 = 0; y0 < kHeight; y0 += size)
             for (int x0 = 0; x0 < kWidth; x0 += size) {
@@ -69,13 +83,10 @@ TEST(LightEdgeProbe, FindsTheLampsOutlineAndTheSameEdgesWhateverTheTiles) {
 
 TEST(LightEdgeProbe, LooksForNothingWhereNoEdgeCanBe) {
     const auto tracesNothing = [](const Scene& scene) {
-        const LightEdgeProbe probe(scene);
-        std::uint64_t rays = 0;
-        const std::vector<bool> edges = probe.edges({0, 0, kWidth, kHeight}, rays);
-        EXPECT_EQ(edges.size(), std::size_t{kWidth * kHeight});
-        EXPECT_EQ(std::count(edges.begin(), edges.end(), true), 0);
-        EXPECT_EQ(rays, 0u);
-        return !probe.active();
+        const WholeImage found = probeWholeImage(scene);
+        EXPECT_EQ(found.edgePixels, 0);
+        EXPECT_EQ(found.rays, 0u);
+        return !found.active;
     };
     // Nothing emits, and the background is no brighter than display white.
     EXPECT_TRUE(tracesNothing(loadScene("1", R"({"diffuse": 0.5})")));
@@ -86,12 +97,9 @@ TEST(LightEdgeProbe, LooksForNothingWhereNoEdgeCanBe) {
 
 TEST(LightEdgeProbe, AFaintLampMakesNoEdge) {
     // The lamp's radiance 0.9 on black: a step below display white.
-    const Scene scene = loadScene("0", R"({"diffuse": 0, "emission": 0.9})");
-    const LightEdgeProbe probe(scene);
-    ASSERT_TRUE(probe.active());
-    std::uint64_t rays = 0;
-    const std::vector<bool> edges = probe.edges({0, 0, kWidth, kHeight}, rays);
-    EXPECT_EQ(std::count(edges.begin(), edges.end(), true), 0);
+    const WholeImage found = probeWholeImage(loadScene("0", R"({"diffuse": 0, "emission": 0.9})"));
+    EXPECT_TRUE(found.active);
+    EXPECT_EQ(found.edgePixels, 0);
 }
 
 }  // namespace
