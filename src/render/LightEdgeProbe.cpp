@@ -1,6 +1,7 @@
 #include "render/LightEdgeProbe.h"
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include "geometry/Shape.h"
@@ -12,9 +13,10 @@ namespace lancer {
 
 LightEdgeProbe::LightEdgeProbe(const Scene& scene)
     : scene_(scene),
+      white_(std::exp2(-scene.settings().exposure)),
       active_(scene.settings().lightEdgeFactor > 1 && scene.settings().samplesPerPixel > 1 &&
               (scene.hasEmittingSurface() || scene.environment() != nullptr ||
-               scene.background().luminance() > kContrast)) {}
+               scene.background().luminance() > white_)) {}
 
 std::vector<bool> LightEdgeProbe::edges(const PixelWindow& window, std::uint64_t& rayCount) const {
     const int width = window.width(), height = window.height();
@@ -35,7 +37,7 @@ std::vector<bool> LightEdgeProbe::edges(const PixelWindow& window, std::uint64_t
             const auto k = static_cast<std::size_t>(i);
             const auto [darkest, brightest] =
                 std::minmax({top[k], top[k + 1], bottom[k], bottom[k + 1]});
-            onEdge[static_cast<std::size_t>(j * width + i)] = brightest - darkest > kContrast;
+            onEdge[static_cast<std::size_t>(j * width + i)] = brightest - darkest > white_;
         }
         std::swap(top, bottom);
     }

@@ -18,22 +18,20 @@ class Scene;
 //
 // The test looks at the pixel's four corners, where one camera ray each (through the lens's
 // centre) meets a surface or leaves the scene: the pixel is on an edge when the luminance those
-// rays see emitted differs by more than kContrast between two corners. It depends on the
+// rays see emitted differs by more than display white between two corners. It depends on the
 // pixel's place alone, never on its samples, so the pixel's estimate stays unbiased, and the
 // image stays the same whatever the tiles and threads. A light smaller than a pixel can fall
 // between the corners; its pixels keep their samples.
 class LightEdgeProbe {
 public:
-    // The luminance step that makes an edge: display white, the brightness of a white surface
-    // lit to full scale. Fainter steps are left to the pixels' own samples.
-    static constexpr float kContrast = 1;
-
+    // The scene's exposure scales the step that makes an edge with display white, the radiance
+    // the outputs show as white: 2^-exposure. Fainter steps are left to the pixels' samples.
     explicit LightEdgeProbe(const Scene& scene);
 
     // Whether edges are looked for: the scene's lightEdgeFactor and spp are above 1 (a pixel of
     // 1 spp is the classic ray tracer's one ray through its centre, every pixel alike), and it
-    // has an emitting surface, an environment, or a background brighter than kContrast (without
-    // them no corner sees more than kContrast). Otherwise edges() finds none and traces nothing.
+    // has an emitting surface, an environment, or a background brighter than display white
+    // (without them no step can be brighter). Otherwise edges() finds none and traces nothing.
     bool active() const { return active_; }
 
     // For each pixel of `window`, row by row, whether it is on an edge. The corners shared by
@@ -47,6 +45,7 @@ private:
     float seenLuminance(float px, float py, std::uint64_t& rayCount) const;
 
     const Scene& scene_;
+    float white_;  // the luminance step that makes an edge
     bool active_;
 };
 

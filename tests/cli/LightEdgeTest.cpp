@@ -112,9 +112,11 @@ TEST(CliLightEdge, TheOptionRendersWhatTheSceneKeyDoes) {
 }
 
 // A dark sphere in front of a bright background (radiance 3): its outline is an edge of what the
-// camera sees emitted, as a light's is; a background at display white or below makes none.
+// camera sees emitted, as a light's is; a background at display white or below makes none, white
+// being the radiance the exposure shows as white (4 at exposure -2).
 TEST(CliLightEdge, ABrightBackgroundsOutlineIsAnEdgeToo) {
-    const auto render = [](double background, const std::vector<std::string>& options) {
+    const auto render = [](double background, double exposure,
+                           const std::vector<std::string>& options) {
         nlohmann::json scene = nlohmann::json::parse(R"({
           "render": { "width": 12, "height": 12, "spp": 4, "integrator": "path",
                       "max_depth": 0 },
@@ -124,10 +126,18 @@ TEST(CliLightEdge, ABrightBackgroundsOutlineIsAnEdgeToo) {
                          "material": "dark" } ]
         })");
         scene["background"] = background;
+        scene["render"]["exposure"] = exposure;
         return renderScene(scene, options).image;
     };
-    EXPECT_GT(maxAbsoluteDifference(render(3, {}), render(3, {"--light-edge-factor", "1"})), 0);
-    EXPECT_EQ(maxAbsoluteDifference(render(1, {}), render(1, {"--light-edge-factor", "1"})), 0);
+    const auto changedByEdges = [&](double background, double exposure) {
+        return maxAbsoluteDifference(render(background, exposure, {}),
+                                     render(background, exposure, {"--light-edge-factor", "1"})) >
+               0;
+    };
+    EXPECT_TRUE(changedByEdges(3, 0));
+    EXPECT_FALSE(changedByEdges(1, 0));
+    EXPECT_FALSE(changedByEdges(3, -2));
+    EXPECT_TRUE(changedByEdges(5, -2));
 }
 
 }  // namespace
