@@ -11,6 +11,7 @@ packages=(
     xvfb xauth libx11-dev libxtst-dev
     libopenmpi-dev openmpi-bin  # mpirun: optional for the build, its tests run when found
     povray libembree-dev hyperfine
+    imagemagick  # scripts/render-gallery.sh: the animation's GIF
     clang libclang-rt-14-dev  # libFuzzer (scripts/fuzz.sh); the runtime is packaged apart on Debian 12
 )
 
