@@ -82,6 +82,9 @@ struct Hit {
 
     // True when the ray arrived from the side ng points to.
     bool frontFace(const Ray& ray) const { return dot(ray.direction, ng) < 0; }
+    // True when the ray meets the side the surface emits from, if its material emits: its front,
+    // or either side of a shape that emits on both (Shape::emitsOnBothSides).
+    bool seesEmittingSide(const Ray& ray) const;
 
     // A ray leaving the surface in direction `dir`.
     Ray spawnRay(const Vec3& dir) const { return {offsetRayOrigin(p, pError, ng, dir), dir}; }

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/Shape.h"
 #include "lights/EnvironmentLight.h"
 #include "materials/Bsdf.h"
 #include "materials/Material.h"
@@ -68,8 +67,7 @@ Color PathIntegrator::radiance(const Ray& cameraRay, const RayCone&, Sampler& sa
         const Hit& hit = *found;
         const Material& material = *hit.material;
         const Vec3 wo = -normalize(ray.direction);
-        if (!material.emission().isBlack() &&
-            (hit.frontFace(ray) || hit.shape->emitsOnBothSides())) {
+        if (!material.emission().isBlack() && hit.seesEmittingSide(ray)) {
             float weight = 1;
             // A BSDF ray hitting a light that light sampling could also have found.
             if (bounces > 0 && !afterDelta) {

@@ -3,7 +3,6 @@
 #include <bit>
 #include <cmath>
 
-#include "geometry/Shape.h"
 #include "integrators/IntegratorRegistry.h"
 #include "lights/Light.h"
 #include "materials/Bsdf.h"
@@ -160,8 +159,7 @@ Color RadiosityIntegrator::gatherRadiance(const Ray& ray, int glossyBounces, Sam
     const Vec3 wo = -ray.direction;
     const bool front = hit.frontFace(ray);
     Color L;
-    if (!emitters_.lightAt(hit) && (front || hit.shape->emitsOnBothSides()))
-        L += hit.material->emission(hit);
+    if (!emitters_.lightAt(hit) && hit.seesEmittingSide(ray)) L += hit.material->emission(hit);
     const Bsdf bsdf(*hit.material, hit, wo, Bsdf::Weights::EnergyConserving);
     const Color kd = bsdf.diffuseReflectance();
     const Vec3 n = bsdf.shadingNormal(front);

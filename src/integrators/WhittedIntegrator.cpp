@@ -4,7 +4,6 @@
 #include <bit>
 #include <cmath>
 
-#include "geometry/Shape.h"
 #include "materials/Bsdf.h"
 #include "materials/Material.h"
 #include "sampling/Sampler.h"
@@ -65,7 +64,7 @@ Color WhittedIntegrator::trace(const PathRay& path, int depth, Sampler& sampler,
     const Bsdf bsdf(material, hit, wo, weights_);
 
     Color L;
-    if (front || hit.shape->emitsOnBothSides()) L += material.emission(hit);
+    if (hit.seesEmittingSide(ray)) L += material.emission(hit);
     L += localShading(hit, bsdf, wo, front, sampler, rayCount);
 
     if (depth >= maxDepth_) return L;

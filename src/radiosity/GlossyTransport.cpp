@@ -1,7 +1,6 @@
 #include "radiosity/GlossyTransport.h"
 
 #include "geometry/Hit.h"
-#include "geometry/Shape.h"
 #include "lights/Light.h"
 #include "materials/Bsdf.h"
 #include "materials/Material.h"
@@ -122,7 +121,7 @@ Color GlossyTransport::reflectedGlossily(const Hit& hit, const Vec3& wo,
         const std::optional<Hit> seen = scene_.intersect(next, kInfinity);
         if (!seen) continue;
         Color there;
-        if (seen->frontFace(next) || seen->shape->emitsOnBothSides()) {
+        if (seen->seesEmittingSide(next)) {
             float weight = 1;
             if (const Light* light = emitters_.lightAt(*seen))
                 weight = powerHeuristic(

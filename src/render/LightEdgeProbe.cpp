@@ -4,7 +4,6 @@
 #include <cmath>
 #include <optional>
 
-#include "geometry/Shape.h"
 #include "materials/Material.h"
 #include "math/Float.h"
 #include "scene/Scene.h"
@@ -53,8 +52,7 @@ float LightEdgeProbe::seenLuminance(float px, float py, std::uint64_t& rayCount)
     const std::optional<Hit> hit = scene_.intersect(*ray, kInfinity);
     if (!hit) return scene_.background(ray->direction).luminance();
     const Material& material = *hit->material;
-    if (material.emission().isBlack() || !(hit->frontFace(*ray) || hit->shape->emitsOnBothSides()))
-        return 0;
+    if (material.emission().isBlack() || !hit->seesEmittingSide(*ray)) return 0;
     return material.emission(*hit).luminance();
 }
 
