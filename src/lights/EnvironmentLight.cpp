@@ -93,8 +93,7 @@ EnvironmentLight::EnvironmentLight(Image map, float intensity, float rotateDegre
       cosRotate_(std::cos(radians(rotateDegrees))),
       sinRotate_(std::sin(radians(rotateDegrees))),
       texels_(borderedTexels(map, intensity)),
-      alone_(wholeMap(cellMeans())),
-      besideBsdf_(aboveAverage(cellMeans())) {
+      strategies_(strategies()) {
     // Each texel's cell subtends (2 pi / w) (pi / h) sin(theta) steradians.
     for (int y = 0; y < height_; ++y) {
         const float solidAngle = 2 * kPi * kPi * rowSinTheta(y, height_) /
@@ -122,14 +121,22 @@ std::vector<float> EnvironmentLight::cellMeans() const {
     return means;
 }
 
+EnvironmentLight::Strategies EnvironmentLight::strategies() const {
+    const std::vector<float> means = cellMeans();
+    return {wholeMap(means), aboveAverage(means)};
+}
+
 // A cell's weight is its mean luminance times sin(theta) at the row's centre, the area of the
 // cell's image on the sphere. Within the cell the point follows the bilinear luminance Y, so the
 // density is the cell's probability w / (N mean w) per cell area 1 / N, times Y over the cell's
 // mean = w / sin(theta): Y sin(theta) / mean w, whatever the cell.
 EnvironmentLight::Strategy EnvironmentLight::wholeMap(const std::vector<float>& means) const {
     std::vector<float> weights(means.size());
-    for (std::size_t i = 0; i < means.size(); ++i)
-        weights[i] = means[i] * rowSinTheta(static_cast<int>(i) / width_, height_);
+    for (int y = 0; y < height_; ++y) {
+        const float sinTheta = rowSinTheta(y, height_);
+        for (std::size_t i = cell(0, y); i < cell(width_, y); ++i)
+            weights[i] = means[i] * sinTheta;
+    }
     return strategy(weights, {});
 }
 
@@ -138,20 +145,25 @@ EnvironmentLight::Strategy EnvironmentLight::wholeMap(const std::vector<float>& 
 // cell's share (mean - average) / mean of its mean.
 EnvironmentLight::Strategy EnvironmentLight::aboveAverage(const std::vector<float>& means) const {
     double weighted = 0, area = 0;
-    for (std::size_t i = 0; i < means.size(); ++i) {
-        const double sinTheta = rowSinTheta(static_cast<int>(i) / width_, height_);
-        weighted += means[i] * sinTheta;
-        area += sinTheta;
+    for (int y = 0; y < height_; ++y) {
+        const double sinTheta = rowSinTheta(y, height_);
+        for (std::size_t i = cell(0, y); i < cell(width_, y); ++i) {
+            weighted += means[i] * sinTheta;
+            area += sinTheta;
+        }
     }
     const auto average = static_cast<float>(weighted / area);
     std::vector<float> weights(means.size()), share(means.size());
     bool anyAbove = false;
-    for (std::size_t i = 0; i < means.size(); ++i) {
-        const float excess = means[i] - average;
-        if (!(excess > 0)) continue;
-        anyAbove = true;
-        weights[i] = excess * rowSinTheta(static_cast<int>(i) / width_, height_);
-        share[i] = excess / means[i];
+    for (int y = 0; y < height_; ++y) {
+        const float sinTheta = rowSinTheta(y, height_);
+        for (std::size_t i = cell(0, y); i < cell(width_, y); ++i) {
+            const float excess = means[i] - average;
+            if (!(excess > 0)) continue;
+            anyAbove = true;
+            weights[i] = excess * sinTheta;
+            share[i] = excess / means[i];
+        }
     }
     // A uniform map has no cell above its average: BSDF sampling is then as good, and the
     // whole map is sampled as it is alone.
@@ -208,11 +220,11 @@ Color EnvironmentLight::radiance(const Vec3& d) const {
 }
 
 EnvironmentLight::Arrival EnvironmentLight::arrival(const Vec3& d) const {
-    return arrivalBy(alone_, d);
+    return arrivalBy(strategies_.alone, d);
 }
 
 EnvironmentLight::Arrival EnvironmentLight::arrivalBesideBsdf(const Vec3& d) const {
-    return arrivalBy(besideBsdf_, d);
+    return arrivalBy(strategies_.besideBsdf, d);
 }
 
 EnvironmentLight::Arrival EnvironmentLight::arrivalBy(const Strategy& strategy,
@@ -272,9 +284,7 @@ float EnvironmentLight::mapDensity(const Strategy& strategy, const Vec2& uv,
     const float density = strategy.rowDensity[static_cast<std::size_t>(y)] * radiance.luminance();
     if (strategy.cellShare.empty()) return density;
     const int x = std::min(static_cast<int>(uv.x * static_cast<float>(width_)), width_ - 1);
-    return density *
-           strategy.cellShare[static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
-                              static_cast<std::size_t>(x)];
+    return density * strategy.cellShare[cell(x, y)];
 }
 
 float EnvironmentLight::solidAngleDensity(float mapDensity, float sinTheta) {
@@ -283,11 +293,11 @@ float EnvironmentLight::solidAngleDensity(float mapDensity, float sinTheta) {
 }
 
 LightSample EnvironmentLight::sample(const Vec3&, const Vec2& u) const {
-    return sampleBy(alone_, u);
+    return sampleBy(strategies_.alone, u);
 }
 
 LightSample EnvironmentLight::sampleBesideBsdf(const Vec3&, const Vec2& u) const {
-    return sampleBy(besideBsdf_, u);
+    return sampleBy(strategies_.besideBsdf, u);
 }
 
 LightSample EnvironmentLight::sampleBy(const Strategy& strategy, const Vec2& u) const {

@@ -83,8 +83,19 @@ private:
         std::vector<float> rowDensity;
         std::vector<float> cellShare;
     };
+    // Cell (x, y)'s place in the per-cell arrays, row by row.
+    std::size_t cell(int x, int y) const {
+        return static_cast<std::size_t>(y) * static_cast<std::size_t>(width_) +
+               static_cast<std::size_t>(x);
+    }
     // Each cell's luminance averaged over it as the bilinear lookup spreads it.
     std::vector<float> cellMeans() const;
+    // sample()'s and sampleBesideBsdf()'s, from the cells' means computed once.
+    struct Strategies {
+        Strategy alone;       // by the cells' mean luminance times sin(theta)
+        Strategy besideBsdf;  // by its excess over the map's mean
+    };
+    Strategies strategies() const;
     // By the cells' mean luminance times sin(theta); by its excess over the map's mean (or, for
     // a map without any, as the former).
     Strategy wholeMap(const std::vector<float>& means) const;
@@ -108,9 +119,8 @@ private:
     int width_, height_;
     float cosRotate_, sinRotate_;
     std::vector<Texel> texels_;  // the map scaled by the intensity, with its border
-    Strategy alone_;             // sample(): by the cells' mean luminance times sin(theta)
-    Strategy besideBsdf_;        // sampleBesideBsdf(): by its excess over the map's mean
-    Color radianceIntegral_;     // the integral of the radiance over the sphere of directions
+    Strategies strategies_;
+    Color radianceIntegral_;  // the integral of the radiance over the sphere of directions
 };
 
 }  // namespace lancer
