@@ -187,10 +187,10 @@ RenderResult Renderer::render(const RenderOptions& options) const {
             const auto index = [&](int x, int y) {
                 return static_cast<std::size_t>((y - tile.y0) * tile.width() + (x - tile.x0));
             };
-            if (cancelled()) return false;
+            if (cancelled()) return false;  // before the probe's rays, as before each row
             const std::vector<bool> onLightEdge = lightEdgeProbe_.edges(tile, counters.rays);
             for (int y = tile.y0; y < tile.y1; ++y) {
-                if (y > tile.y0 && cancelled()) return false;
+                if (cancelled()) return false;
                 for (int x = tile.x0; x < tile.x1; ++x)
                     tilePixels[index(x, y)] = pixelEstimator_.estimate(
                         x, y, options.seed, counters, onLightEdge[index(x, y)],
